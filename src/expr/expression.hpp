@@ -1,0 +1,76 @@
+#pragma once
+// ADAMS function expressions (FUNCTION=, F2=, ...): parsed once, compiled to a flat program,
+// evaluated in the integrator's inner loop with exact first derivatives.
+//
+// Split of work between this module and its host (the mechanics):
+//  * This module owns the language (FORTRAN-77 operators and precedence, ADAMS constants, the
+//    math intrinsics and the general-purpose functions STEP, POLY, IMPACT, IF, ...), and the
+//    chain rule through them.
+//  * Functions whose value depends on the model (marker measures DX, DM, VR, WZ, ORIENT, PSI,
+//    ...; force measures JOINT, SFORCE, FX, ...; system-element access VARVAL, DIF, ...; the
+//    analysis variables MODE, HSIZE, ...) are "host calls": leaves whose value the host supplies
+//    at evaluation, together with their derivatives. All arguments of a host call are integer
+//    constants (identifiers and flags) and are kept as written.
+
+#include <array>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "common/diagnostics.hpp"
+
+namespace openmss::expr {
+
+struct HostCall {
+  std::string name;         // canonical upper-case name: "DM", "JOINT", "ORIENT", "MODE", ...
+  std::vector<long> args;   // integer arguments as written; omitted trailing ones are absent
+  int column = 0;           // 1-based column of the function name within the expression text
+};
+
+// Value and first two time derivatives of an expression that depends on TIME only.
+struct TimeJet {
+  double value = 0.0;
+  double d1 = 0.0;  // d/dt
+  double d2 = 0.0;  // d2/dt2
+};
+
+class Program;  // the compiled form (private to the module)
+
+class Expression {
+ public:
+  Expression();
+  ~Expression();
+  Expression(Expression&&) noexcept;
+  Expression& operator=(Expression&&) noexcept;
+  Expression(const Expression&);
+  Expression& operator=(const Expression&);
+
+  // Parses `text`. On failure returns false and adds one or more diagnostics to `diags`, each
+  // located at `where` with the column inside the expression, naming `subject`
+  // (e.g. "SFORCE/104") and saying what to change. Unknown functions, wrong argument counts,
+  // unbalanced parentheses, non-integer arguments of host calls are all errors.
+  static bool parse(const std::string& text, const SourceLocation& where,
+                    const std::string& subject, Diagnostics& diags, Expression& out);
+
+  const std::string& text() const;
+
+  // Distinct host calls in first-appearance order. Host value k is hostValues[k] below.
+  const std::vector<HostCall>& hostCalls() const;
+  bool dependsOnTime() const;
+
+  // Value. hostValues has hostCalls().size() entries. No allocation.
+  double evaluate(const double* hostValues, double time) const;
+
+  // Value and exact partial derivatives: dHost[k] = d value / d hostValues[k] (size
+  // hostCalls().size()), *dTime = d value / d TIME (explicit dependence only). No allocation.
+  double evaluate(const double* hostValues, double time, double* dHost, double* dTime) const;
+
+  // For expressions without host calls: value and first and second derivatives in TIME
+  // (MOTION functions need velocity and acceleration). Precondition: hostCalls().empty().
+  TimeJet evaluateTimeJet(double time) const;
+
+ private:
+  std::unique_ptr<Program> program_;
+};
+
+}  // namespace openmss::expr

@@ -1,0 +1,57 @@
+#pragma once
+// The Dataset: an ADAMS data set (.adm) or command file (.acf) as read, before any meaning is
+// attached. Statement and argument names are canonical (full, upper-case) after abbreviation
+// resolution against the statement schema; every piece keeps its source location.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "common/source_location.hpp"
+
+namespace openmss::language {
+
+// One value of an argument: a number or a word, as written.
+struct Value {
+  enum class Kind { Number, Word };
+  Kind kind = Kind::Number;
+  double number = 0.0;     // numeric value; already scaled by pi/180 when written with D
+  bool isInteger = false;  // written with neither '.' nor exponent (and no D)
+  bool degrees = false;    // written with a trailing D
+  std::string text;        // the token exactly as written (upper-cased for words)
+  SourceLocation where;
+};
+
+struct Argument {
+  std::string name;             // canonical keyword, e.g. "REULER"; for a flag, e.g. "GROUND"
+  std::string spelled;          // as the user wrote it, e.g. "reu"
+  std::vector<Value> values;    // values after '=' ("" for flags); separated by ',' or ':'
+  std::vector<char> separators; // separators[k] is the delimiter before values[k+1] (',' or ':')
+  bool isExpression = false;    // FUNCTION=, F2=, ... : the raw expression text is kept
+  std::string expression;       // the expression with continuation commas joined, blanks kept
+  SourceLocation where;         // location of the keyword
+  SourceLocation valueWhere;    // location of the first value/expression character
+};
+
+struct Statement {
+  std::string name;           // canonical statement or command name, e.g. "MARKER"
+  std::string spelled;        // as written
+  std::optional<long> id;     // identifier after '/', when given
+  std::vector<Argument> args; // in the order written
+  SourceLocation where;       // the line where the statement starts
+  int lastLine = 0;           // last physical line of the statement (continuations included)
+
+  // "MARKER/201" or "UNITS" — the subject used in diagnostics.
+  std::string subject() const;
+  const Argument* find(const std::string& canonicalName) const;
+  bool has(const std::string& canonicalName) const { return find(canonicalName) != nullptr; }
+};
+
+struct Dataset {
+  std::string file;   // path of the file read
+  std::string title;  // line 1 (data sets only)
+  std::vector<Statement> statements;
+  bool sawEnd = false;  // an END statement was read
+};
+
+}  // namespace openmss::language
