@@ -1,1 +1,291 @@
-int main() { return 0; }
+// openmss: the command-line program. Subcommands: run, check, eval (see --help).
+
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "analysis/session.hpp"
+#include "expr/standalone.hpp"
+#include "language/command_reader.hpp"
+#include "language/reader.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "model/model_builder.hpp"
+
+namespace fs = std::filesystem;
+using namespace openmss;
+
+namespace {
+
+constexpr const char* kMainHelp =
+    "openmss - mechanical system simulation with ADAMS/Solver data sets\n"
+    "\n"
+    "Usage:\n"
+    "  openmss run FILE.acf [--outdir DIR]          run an ADAMS command file\n"
+    "  openmss run FILE.adm [--end T] [--steps N | --dtout H] [--outdir DIR]\n"
+    "                                               run a model with a transient simulation\n"
+    "  openmss check FILE.adm                       read and check a model, print its DOF\n"
+    "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
+    "  openmss COMMAND --help                       help on one command\n"
+    "\n"
+    "Exit status: 0 success, 1 input errors, 2 analysis failure, 64 usage error.\n";
+
+constexpr const char* kRunHelp =
+    "openmss run FILE.acf [--outdir DIR] [--quiet]\n"
+    "  Runs an ADAMS command file as ADAMS does: line 1 names the model (relative paths\n"
+    "  resolve against the command file's folder; .adm is supplied when missing), line 2 the\n"
+    "  output prefix (blank: the model's base name), then commands until STOP.\n"
+    "openmss run FILE.adm [--end T] [--steps N | --dtout H] [--outdir DIR] [--quiet]\n"
+    "  Runs a model with SIMULATE/TRANSIENT, END=T (default 1), and STEPS=N (default 100) or\n"
+    "  DTOUT=H; writes the request file when the model asks for it (OUTPUT/REQSAVE).\n"
+    "Outputs go to the current directory or to --outdir: <prefix>.msg, <prefix>.req.\n"
+    "A progress line (simulated time, steps, ETA) is shown on a terminal.\n";
+
+constexpr const char* kCheckHelp =
+    "openmss check FILE.adm\n"
+    "  Reads and checks a data set without simulating. Prints every diagnostic\n"
+    "  (file:line: severity: STATEMENT/id: message. what to change), the Gruebler count and\n"
+    "  the degrees of freedom from the rank of the constraint Jacobian.\n"
+    "  Exit status 0 when the model is clean, 1 otherwise.\n";
+
+constexpr const char* kEvalHelp =
+    "openmss eval 'EXPR' [--time T] [--derivative]\n"
+    "  Evaluates a function expression that needs no model (numbers, constants, TIME and the\n"
+    "  general functions STEP, POLY, IMPACT, ...) and prints its value; with --derivative also\n"
+    "  d/dTIME.\n";
+
+bool wantsHelp(int argc, char** argv) {
+  for (int i = 2; i < argc; ++i)
+    if (std::string(argv[i]) == "--help" || std::string(argv[i]) == "-h") return true;
+  return false;
+}
+
+void printDiagnostics(const Diagnostics& d) {
+  for (const auto& x : d.all()) std::fprintf(stderr, "%s\n", format(x).c_str());
+}
+
+std::vector<std::string> fileLines(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<std::string> lines;
+  std::string l;
+  while (std::getline(in, l)) {
+    if (!l.empty() && l.back() == '\r') l.pop_back();
+    lines.push_back(l);
+  }
+  return lines;
+}
+
+int printSummary(const analysis::Session& s, bool ok) {
+  const model::Model* m = s.model();
+  if (!m) return 1;
+  std::printf("OpenMSS: %s\n", m->title.c_str());
+  std::printf("  model:    %d moving parts, %zu joints, %zu motions, %zu SFORCEs, %zu requests; "
+              "%d degrees of freedom (Gruebler count %d)\n",
+              m->bodyCount(), m->joints.size(), m->motions.size(), m->sforces.size(),
+              m->requests.size(), s.degreesOfFreedom(), s.grueblerDegreesOfFreedom());
+  const auto& r = s.summary();
+  if (!r.analysis.empty())
+    std::printf("  analysis: %s, reached t = %g with %ld integration steps, %ld output steps\n",
+                r.analysis.c_str(), r.time, r.steps, r.outputSteps);
+  std::printf("  outputs:  %s%s\n", s.messageFilePath().c_str(),
+              m->output.reqsave ? (", " + s.requestFilePath()).c_str() : "");
+  if (!ok) std::printf("  the run did not complete: see the diagnostics above\n");
+  return 0;
+}
+
+int runCommandFile(const std::string& path, const std::string& outdir, bool quiet) {
+  Diagnostics diags;
+  language::CommandFile cf;
+  language::readCommandFile(path, cf, diags);
+  if (diags.hasErrors()) {
+    printDiagnostics(diags);
+    return 1;
+  }
+  printDiagnostics(diags);
+  analysis::SessionOptions opt;
+  opt.outputDirectory = outdir;
+  opt.progress = !quiet && isatty(STDERR_FILENO);
+  analysis::Session session(opt);
+  const fs::path base = fs::path(path).parent_path();
+  bool ok = true;
+  bool loaded = false;
+  if (!cf.modelFile.empty()) {
+    fs::path model = cf.modelFile;
+    if (model.is_relative()) model = base / model;
+    if (!fs::exists(model) && model.extension().empty()) model += ".adm";
+    std::string prefix = cf.outputPrefix.empty() ? model.stem().string() : cf.outputPrefix;
+    loaded = session.loadModel(model.string(), prefix);
+    if (!loaded) {
+      std::fprintf(stderr, "openmss: the model %s has errors; nothing was simulated\n",
+                   model.string().c_str());
+      return 1;
+    }
+  }
+  const auto lines = fileLines(path);
+  for (const auto& c : cf.commands) {
+    for (int l = c.where.line; l >= 1 && l <= std::max(c.lastLine, c.where.line) &&
+                               l <= static_cast<int>(lines.size());
+         ++l)
+      session.echoCommand(lines[l - 1]);
+    if (c.name == "FILE" && c.has("MODEL")) {
+      const auto* a = c.find("MODEL");
+      fs::path model = a->values.empty() ? "" : a->values[0].text;
+      if (model.is_relative()) model = base / model;
+      if (!fs::exists(model) && model.extension().empty()) model += ".adm";
+      std::string prefix = model.stem().string();
+      if (const auto* p = c.find("OUTPUT_PREFIX"); p && !p->values.empty()) prefix = p->values[0].text;
+      if (!session.loadModel(model.string(), prefix)) return 1;
+      loaded = true;
+      continue;
+    }
+    if (!session.execute(c)) {
+      ok = false;
+      break;
+    }
+    if (session.stopped()) break;
+  }
+  if (!quiet) printSummary(session, ok);
+  return ok ? 0 : 2;
+}
+
+int runModel(const std::string& path, double end, long steps, double dtout,
+             const std::string& outdir, bool quiet) {
+  analysis::SessionOptions opt;
+  opt.outputDirectory = outdir;
+  opt.progress = !quiet && isatty(STDERR_FILENO);
+  analysis::Session session(opt);
+  if (!session.loadModel(path, fs::path(path).stem().string())) return 1;
+  std::string text = "SIMULATE/TRANSIENT, END=" + std::to_string(end) +
+                     (dtout > 0 ? ", DTOUT=" + std::to_string(dtout)
+                                : ", STEPS=" + std::to_string(steps));
+  language::CommandReader reader("<command line>");
+  reader.feedLine(text);
+  reader.finish();
+  auto cmds = reader.takeCommands();
+  bool ok = true;
+  for (const auto& c : cmds) {
+    session.echoCommand(text);
+    ok = session.execute(c) && ok;
+  }
+  if (!quiet) printSummary(session, ok);
+  return ok ? 0 : 2;
+}
+
+int check(const std::string& path) {
+  Diagnostics diags;
+  language::Dataset ds;
+  language::readDatasetFile(path, ds, diags);
+  model::Model m;
+  bool built = false;
+  if (!diags.hasErrors()) built = model::buildModel(ds, m, diags);
+  printDiagnostics(diags);
+  if (!built || diags.hasErrors()) {
+    std::printf("%s: %d error(s), %d warning(s)\n", path.c_str(), diags.errorCount(),
+                diags.warningCount());
+    return 1;
+  }
+  mechanics::MultibodySystem system(m);
+  Eigen::VectorXd y = system.initialState();
+  int gruebler = 6 * m.bodyCount();
+  for (const auto& j : m.joints) gruebler -= mechanics::ConstraintSet::equationCount(j.type);
+  gruebler -= static_cast<int>(m.motions.size());
+  auto red = mechanics::removeRedundantConstraints(system, y);
+  std::printf("%s: %s\n", path.c_str(), m.title.c_str());
+  std::printf("  %d moving parts, %zu joints, %zu motions, %zu SFORCEs, %zu requests\n",
+              m.bodyCount(), m.joints.size(), m.motions.size(), m.sforces.size(),
+              m.requests.size());
+  std::printf("  Gruebler count: %d\n", gruebler);
+  for (int k : red.removed)
+    std::printf("  redundant: %s\n", system.constraints().describe(k, m).c_str());
+  std::printf("DOF %d\n", 6 * m.bodyCount() - red.rank);
+  std::printf("%d error(s), %d warning(s)\n", diags.errorCount(), diags.warningCount());
+  return 0;
+}
+
+int eval(int argc, char** argv) {
+  std::string text;
+  double time = 0.0;
+  bool derivative = false;
+  for (int i = 2; i < argc; ++i) {
+    std::string a = argv[i];
+    if (a == "--time" && i + 1 < argc) time = std::atof(argv[++i]);
+    else if (a == "--derivative") derivative = true;
+    else if (text.empty()) text = a;
+    else {
+      std::fprintf(stderr, "openmss eval: unexpected argument %s\n%s", a.c_str(), kEvalHelp);
+      return 64;
+    }
+  }
+  if (text.empty()) {
+    std::fprintf(stderr, "%s", kEvalHelp);
+    return 64;
+  }
+  Diagnostics d;
+  double v = 0.0, dv = 0.0;
+  if (!expr::evaluateStandalone(text, time, &v, &dv, d)) {
+    printDiagnostics(d);
+    return 1;
+  }
+  std::printf("%.17g\n", v);
+  if (derivative) std::printf("d/dTIME %.17g\n", dv);
+  return 0;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+    std::printf("%s", kMainHelp);
+    return argc < 2 ? 64 : 0;
+  }
+  const std::string cmd = argv[1];
+  if (cmd == "run") {
+    if (wantsHelp(argc, argv)) { std::printf("%s", kRunHelp); return 0; }
+    std::string file, outdir = ".";
+    double end = 1.0, dtout = 0.0;
+    long steps = 100;
+    bool quiet = false;
+    for (int i = 2; i < argc; ++i) {
+      std::string a = argv[i];
+      auto next = [&]() -> const char* {
+        if (i + 1 >= argc) {
+          std::fprintf(stderr, "openmss run: %s needs a value\n", a.c_str());
+          std::exit(64);
+        }
+        return argv[++i];
+      };
+      if (a == "--outdir") outdir = next();
+      else if (a == "--end") end = std::atof(next());
+      else if (a == "--steps") steps = std::atol(next());
+      else if (a == "--dtout") dtout = std::atof(next());
+      else if (a == "--quiet") quiet = true;
+      else if (a == "--summary") {}
+      else if (file.empty()) file = a;
+      else { std::fprintf(stderr, "openmss run: unexpected argument %s\n", a.c_str()); return 64; }
+    }
+    if (file.empty()) { std::fprintf(stderr, "%s", kRunHelp); return 64; }
+    if (!fs::exists(file)) {
+      std::fprintf(stderr, "openmss run: %s: no such file\n", file.c_str());
+      return 1;
+    }
+    const std::string ext = fs::path(file).extension().string();
+    if (ext == ".acf" || ext == ".ACF") return runCommandFile(file, outdir, quiet);
+    return runModel(file, end, steps, dtout, outdir, quiet);
+  }
+  if (cmd == "check") {
+    if (wantsHelp(argc, argv)) { std::printf("%s", kCheckHelp); return 0; }
+    if (argc != 3) { std::fprintf(stderr, "%s", kCheckHelp); return 64; }
+    return check(argv[2]);
+  }
+  if (cmd == "eval") {
+    if (wantsHelp(argc, argv)) { std::printf("%s", kEvalHelp); return 0; }
+    return eval(argc, argv);
+  }
+  std::fprintf(stderr, "openmss: unknown command '%s'\n%s", cmd.c_str(), kMainHelp);
+  return 64;
+}

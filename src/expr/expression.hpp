@@ -22,9 +22,9 @@
 namespace openmss::expr {
 
 struct HostCall {
-  std::string name;         // canonical upper-case name: "DM", "JOINT", "ORIENT", "MODE", ...
-  std::vector<long> args;   // integer arguments as written; omitted trailing ones are absent
-  int column = 0;           // 1-based column of the function name within the expression text
+  std::string name;        // canonical upper-case name: "DM", "JOINT", "ORIENT", "MODE", ...
+  std::vector<long> args;  // integer arguments as written; omitted trailing ones are absent
+  int column = 0;          // 1-based column of the function name within the expression text
 };
 
 // Value and first two time derivatives of an expression that depends on TIME only.
@@ -36,6 +36,9 @@ struct TimeJet {
 
 class Program;  // the compiled form (private to the module)
 
+// Evaluation allocates nothing and keeps no mutable state in the object, so const methods may
+// be called concurrently on one Expression (work arrays live on the caller's stack; see
+// program.hpp for the rare expression too long for them).
 class Expression {
  public:
   Expression();

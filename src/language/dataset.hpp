@@ -20,26 +20,33 @@ struct Value {
   bool degrees = false;    // written with a trailing D
   std::string text;        // the token exactly as written (upper-cased for words)
   SourceLocation where;
+  // Added by the reader: the token in its original case (file and routine names, CNAMES),
+  // without the quotes of a "quoted" word; the raw text for a Text argument.
+  std::string written;
+  bool quoted = false;  // written between double quotes (then `text` keeps the case too)
 };
 
 struct Argument {
-  std::string name;             // canonical keyword, e.g. "REULER"; for a flag, e.g. "GROUND"
-  std::string spelled;          // as the user wrote it, e.g. "reu"
-  std::vector<Value> values;    // values after '=' ("" for flags); separated by ',' or ':'
-  std::vector<char> separators; // separators[k] is the delimiter before values[k+1] (',' or ':')
-  bool isExpression = false;    // FUNCTION=, F2=, ... : the raw expression text is kept
-  std::string expression;       // the expression with continuation commas joined, blanks kept
-  SourceLocation where;         // location of the keyword
-  SourceLocation valueWhere;    // location of the first value/expression character
+  std::string name;              // canonical keyword, e.g. "REULER"; for a flag, e.g. "GROUND"
+  std::string spelled;           // as the user wrote it, e.g. "reu"
+  std::vector<Value> values;     // values after '=' ("" for flags); separated by ',' or ':'
+  std::vector<char> separators;  // separators[k] is the delimiter before values[k+1] (',' or ':')
+  bool isExpression = false;     // FUNCTION=, F2=, ... : the raw expression text is kept
+  std::string expression;        // the expression with continuation commas joined, blanks kept
+  SourceLocation where;          // location of the keyword
+  SourceLocation valueWhere;     // location of the first value/expression character
+  // Added by the reader: COMMENT=, TITLE=, STRING=... take the raw text to the end of the
+  // physical line; it is values[0].text (case kept, trailing blanks trimmed).
+  bool isText = false;
 };
 
 struct Statement {
-  std::string name;           // canonical statement or command name, e.g. "MARKER"
-  std::string spelled;        // as written
-  std::optional<long> id;     // identifier after '/', when given
-  std::vector<Argument> args; // in the order written
-  SourceLocation where;       // the line where the statement starts
-  int lastLine = 0;           // last physical line of the statement (continuations included)
+  std::string name;            // canonical statement or command name, e.g. "MARKER"
+  std::string spelled;         // as written
+  std::optional<long> id;      // identifier after '/', when given
+  std::vector<Argument> args;  // in the order written
+  SourceLocation where;        // the line where the statement starts
+  int lastLine = 0;            // last physical line of the statement (continuations included)
 
   // "MARKER/201" or "UNITS" — the subject used in diagnostics.
   std::string subject() const;

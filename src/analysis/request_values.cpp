@@ -1,0 +1,184 @@
+#include "analysis/request_values.hpp"
+
+#include <cmath>
+
+#include "common/rotation.hpp"
+#include "mechanics/measures.hpp"
+
+namespace openmss::analysis {
+namespace {
+
+using mechanics::StateLayout;
+
+struct Kin {
+  Eigen::Vector3d p, v, a, w, alpha;
+  Eigen::Matrix3d axes;
+};
+
+Kin markerKinematics(const mechanics::MultibodySystem& s, int marker, const Eigen::VectorXd& y,
+                     const Eigen::VectorXd& yp) {
+  Kin k;
+  k.p.setZero(); k.v.setZero(); k.a.setZero(); k.w.setZero(); k.alpha.setZero();
+  k.axes.setIdentity();
+  if (marker < 0) return k;
+  const auto& m = s.model();
+  const auto& mk = m.markers[marker];
+  const auto& part = m.parts[mk.part];
+  if (part.body < 0) {
+    k.p = mk.position;
+    k.axes = mk.orientation;
+    return k;
+  }
+  const auto& l = s.layout();
+  const int o = l.body(part.body);
+  const auto pose = mechanics::bodyPose(l, part.body, y.data());
+  const Eigen::Matrix3d a = toEigen(pose.a);
+  const Eigen::Vector3d sg = a * mk.position;
+  k.w = toEigen(pose.wg);
+  k.alpha = a * yp.segment<3>(o + StateLayout::kW);
+  k.p = toEigen(pose.r) + sg;
+  k.v = toEigen(pose.v) + k.w.cross(sg);
+  k.a = yp.segment<3>(o + StateLayout::kV) + k.alpha.cross(sg) + k.w.cross(k.w.cross(sg));
+  k.axes = a * mk.orientation;
+  return k;
+}
+
+// Force and torque (about the marker origin, ground axes) on `marker` from element forces.
+void elementForce(const mechanics::MultibodySystem& s, model::MeasureKind kind, int element,
+                  bool atJ, double t, const Eigen::VectorXd& y, Eigen::Vector3d& f,
+                  Eigen::Vector3d& tq) {
+  const auto& m = s.model();
+  if (kind == model::MeasureKind::SForceForce) {
+    s.sforceAction(element, atJ, t, y.data(), f, tq);
+    return;
+  }
+  const bool motion = kind == model::MeasureKind::MotionForce;
+  const model::Joint& j = m.joints[motion ? m.motions[element].joint : element];
+  s.elementReaction(motion, element, atJ ? j.jMarker : j.iMarker, y.data(), f, tq);
+}
+
+double component(const Eigen::Vector3d& f, const Eigen::Vector3d& tq, int comp,
+                 const Eigen::Matrix3d& rm) {
+  const Eigen::Vector3d fr = rm.transpose() * f;
+  const Eigen::Vector3d tr = rm.transpose() * tq;
+  switch (comp) {
+    case 1: return f.norm();
+    case 2: case 3: case 4: return fr(comp - 2);
+    case 5: return tq.norm();
+    default: return tr(comp - 6);
+  }
+}
+
+}  // namespace
+
+double measureValue(const mechanics::MultibodySystem& s, const model::Measure& ms, double t,
+                    const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+  using K = model::MeasureKind;
+  double out = 0.0;
+  if (mechanics::kinematicMeasure(s.model(), s.layout(), ms, y.data(), &out)) return out;
+  const Kin i = markerKinematics(s, ms.i, y, yp);
+  const Kin j = markerKinematics(s, ms.j, y, yp);
+  const Eigen::Matrix3d k = ms.k >= 0 ? markerKinematics(s, ms.k, y, yp).axes
+                                      : Eigen::Matrix3d::Identity();
+  // Time derivatives are taken in ground, so relative accelerations are plain differences.
+  const Eigen::Vector3d acc = i.a - j.a, wdt = i.alpha - j.alpha;
+  switch (ms.kind) {
+    case K::ACCX: return acc.dot(k.col(0));
+    case K::ACCY: return acc.dot(k.col(1));
+    case K::ACCZ: return acc.dot(k.col(2));
+    case K::ACCM: return acc.norm();
+    case K::WDTX: return wdt.dot(k.col(0));
+    case K::WDTY: return wdt.dot(k.col(1));
+    case K::WDTZ: return wdt.dot(k.col(2));
+    case K::WDTM: return wdt.norm();
+    case K::JointForce: case K::MotionForce: case K::SForceForce: {
+      Eigen::Vector3d f, tq;
+      elementForce(s, ms.kind, ms.element, ms.atJ == 1, t, y, f, tq);
+      return component(f, tq, ms.component, k);
+    }
+    case K::Time:
+      return t;
+    default:
+      return 0.0;
+  }
+}
+
+std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
+                                     const model::Request& r, double t,
+                                     const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+  std::array<double, 8> c{};
+  using RK = model::Request::Kind;
+  if (r.kind == RK::Expressions) {
+    std::vector<double> host;
+    for (int col = 0; col < 8; ++col) {
+      if (!r.columns[col]) continue;
+      const auto& b = *r.columns[col];
+      host.assign(b.measures.size(), 0.0);
+      for (size_t k = 0; k < b.measures.size(); ++k)
+        host[k] = measureValue(s, b.measures[k], t, y, yp);
+      c[col] = b.expression.evaluate(host.empty() ? nullptr : host.data(), t);
+    }
+    return c;
+  }
+  const Kin i = markerKinematics(s, r.iMarker, y, yp);
+  const Kin j = markerKinematics(s, r.jMarker, y, yp);
+  const Eigen::Matrix3d rm = r.rmMarker >= 0 ? markerKinematics(s, r.rmMarker, y, yp).axes
+                                             : Eigen::Matrix3d::Identity();
+  auto put = [&](const Eigen::Vector3d& lin, const Eigen::Vector3d& ang, bool angMagnitude) {
+    const Eigen::Vector3d l = rm.transpose() * lin;
+    const Eigen::Vector3d a = rm.transpose() * ang;
+    c[0] = lin.norm();
+    c[1] = l(0); c[2] = l(1); c[3] = l(2);
+    c[4] = angMagnitude ? ang.norm() : 0.0;
+    c[5] = a(0); c[6] = a(1); c[7] = a(2);
+  };
+  switch (r.kind) {
+    case RK::Displacement: {
+      const Eigen::Vector3d d = i.p - j.p;
+      const Eigen::Vector3d l = rm.transpose() * d;
+      // Body 3-1-3 angles of I relative to J (not affected by RM).
+      const Eigen::Vector3d e = euler313FromMatrix(j.axes.transpose() * i.axes);
+      c = {d.norm(), l(0), l(1), l(2), 0.0, e(0), e(1), e(2)};
+      break;
+    }
+    case RK::Velocity:
+      put(i.v - j.v, i.w - j.w, true);
+      break;
+    case RK::Acceleration:
+      put(i.a - j.a, i.alpha - j.alpha, true);
+      break;
+    case RK::Force: {
+      // Every joint, motion and SFORCE acting between I and J, on I.
+      const auto& m = s.model();
+      Eigen::Vector3d ft = Eigen::Vector3d::Zero(), tt = Eigen::Vector3d::Zero();
+      auto between = [&](int a, int b) {
+        return (a == r.iMarker && b == r.jMarker) || (a == r.jMarker && b == r.iMarker);
+      };
+      Eigen::Vector3d f, tq;
+      for (int e = 0; e < static_cast<int>(m.joints.size()); ++e)
+        if (between(m.joints[e].iMarker, m.joints[e].jMarker)) {
+          s.elementReaction(false, e, r.iMarker, y.data(), f, tq);
+          ft += f; tt += tq;
+        }
+      for (int e = 0; e < static_cast<int>(m.motions.size()); ++e) {
+        const auto& jt = m.joints[m.motions[e].joint];
+        if (between(jt.iMarker, jt.jMarker)) {
+          s.elementReaction(true, e, r.iMarker, y.data(), f, tq);
+          ft += f; tt += tq;
+        }
+      }
+      for (int e = 0; e < static_cast<int>(m.sforces.size()); ++e)
+        if (between(m.sforces[e].iMarker, m.sforces[e].jMarker)) {
+          s.sforceAction(e, m.sforces[e].iMarker != r.iMarker, t, y.data(), f, tq);
+          ft += f; tt += tq;
+        }
+      put(ft, tt, true);
+      break;
+    }
+    default:
+      break;
+  }
+  return c;
+}
+
+}  // namespace openmss::analysis

@@ -1,0 +1,430 @@
+#include "analysis/session.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include "analysis/multibody_dae.hpp"
+#include "analysis/request_values.hpp"
+#include "language/reader.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "model/model_builder.hpp"
+
+namespace openmss::analysis {
+namespace {
+
+std::string fmt(const char* f, double v) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, f, v);
+  return buf;
+}
+
+const language::Argument* arg(const language::Statement& s, const char* name) {
+  return s.find(name);
+}
+
+std::optional<double> number(const language::Statement& s, const char* name) {
+  const language::Argument* a = arg(s, name);
+  if (!a || a->values.empty() || a->values[0].kind != language::Value::Kind::Number)
+    return std::nullopt;
+  return a->values[0].number;
+}
+
+}  // namespace
+
+Session::Session(SessionOptions options) : options_(std::move(options)) {}
+Session::~Session() = default;
+
+std::string Session::requestFilePath() const {
+  return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".req")).string();
+}
+std::string Session::messageFilePath() const {
+  return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".msg")).string();
+}
+
+void Session::report(const Diagnostic& d) {
+  msg_.diagnostic(d);
+  if (options_.echoDiagnostics) std::fprintf(stderr, "%s\n", format(d).c_str());
+}
+
+void Session::error(const language::Statement& s, const std::string& message,
+                    const std::string& hint) {
+  diags_.error(s.where, s.subject(), message, hint);
+  report(diags_.all().back());
+}
+
+void Session::echoCommand(const std::string& text) { msg_.line(" command: " + text); }
+
+bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
+  prefix_ = outputPrefix;
+  std::filesystem::create_directories(options_.outputDirectory);
+  if (!msg_.open(messageFilePath())) {
+    diags_.error({path, 0, 0}, "", "cannot create the message file " + messageFilePath(),
+                 "Check that the output directory exists and is writable.");
+    report(diags_.all().back());
+    return false;
+  }
+  msg_.line("OpenMSS " + std::string(OPENMSS_VERSION) +
+            " -- mechanical system simulation (ADAMS/Solver data sets)");
+  msg_.line("");
+  msg_.line(" command: FILE/MODEL=" + path + ", OUTPUT_PREFIX=" + prefix_);
+
+  language::Dataset dataset;
+  Diagnostics readDiags;
+  language::readDatasetFile(path, dataset, readDiags);
+  model_ = std::make_unique<model::Model>();
+  if (!readDiags.hasErrors()) model::buildModel(dataset, *model_, readDiags);
+  for (const auto& d : readDiags.all()) {
+    diags_.add(d);
+    report(d);
+  }
+  msg_.line("");
+  msg_.line(" Model title: " + dataset.title);
+  if (diags_.hasErrors()) {
+    msg_.line(" The data set has " + std::to_string(diags_.errorCount()) +
+              " error(s); no analysis is possible.");
+    return false;
+  }
+  system_ = std::make_unique<mechanics::MultibodySystem>(*model_);
+  y_ = system_->initialState();
+  yp_ = Eigen::VectorXd::Zero(y_.size());
+  t_ = 0.0;
+
+  // Model summary and degree-of-freedom analysis at the data set's configuration.
+  const model::Model& m = *model_;
+  int constraintCount = 0;
+  for (const auto& j : m.joints) constraintCount += mechanics::ConstraintSet::equationCount(j.type);
+  constraintCount += static_cast<int>(m.motions.size());
+  gruebler_ = 6 * m.bodyCount() - constraintCount;
+  auto redundancy = mechanics::removeRedundantConstraints(*system_, y_);
+  dof_ = 6 * m.bodyCount() - redundancy.rank;
+  msg_.line("");
+  msg_.line(" Model summary");
+  msg_.line("   Units:                " + m.units.description + ", UCF = " +
+            fmt("%.10g", m.units.ucf));
+  msg_.line("   Moving parts:         " + std::to_string(m.bodyCount()) + " (plus ground)");
+  msg_.line("   Markers:              " + std::to_string(m.markers.size()));
+  msg_.line("   Joints:               " + std::to_string(m.joints.size()));
+  msg_.line("   Motions:              " + std::to_string(m.motions.size()));
+  msg_.line("   SFORCEs:              " + std::to_string(m.sforces.size()));
+  msg_.line("   Requests:             " + std::to_string(m.requests.size()));
+  msg_.line("   Constraint equations: " + std::to_string(system_->constraints().size()));
+  msg_.line("   Gruebler count:       " + std::to_string(gruebler_) + " degrees of freedom");
+  msg_.line("   Degrees of freedom:   " + std::to_string(dof_) +
+            " (from the rank of the constraint Jacobian)");
+  for (int k : redundancy.removed) {
+    const std::string text = "redundant constraint equation removed: " +
+                             system_->constraints().describe(k, m) +
+                             " (its reaction is carried by the equations kept)";
+    diags_.warning({m.file, 0, 0}, "", text);
+    report(diags_.all().back());
+  }
+  return true;
+}
+
+bool Session::execute(const language::Statement& c) {
+  if (c.name == "STOP") {
+    stopped_ = true;
+    msg_.line("");
+    msg_.line(" Finished -----");
+    req_.close();
+    return true;
+  }
+  if (!system_) {
+    error(c, "no model is loaded", "Load a data set first (line 1 of the .acf, or FILE/MODEL=).");
+    return false;
+  }
+  if (c.name == "SIMULATE") return simulate(c);
+  if (c.name == "INTEGRATOR" || c.name == "GSTIFF") return setIntegrator(c);
+  if (c.name == "OUTPUT") return setOutput(c);
+  error(c, c.name + " is not supported yet by the solver",
+        "README.md lists the supported commands; remove this one or run it elsewhere.");
+  return false;
+}
+
+bool Session::setOutput(const language::Statement& c) {
+  for (const auto& a : c.args) {
+    if (a.name == "NOSEPARATOR") model_->output.noseparator = true;
+    else if (a.name == "SEPARATOR") model_->output.noseparator = false;
+    else if (a.name == "REQSAVE") model_->output.reqsave = true;
+    else {
+      diags_.warning(a.where, c.subject(), a.name + " is not supported yet and has no effect",
+                     "Remove it to silence this warning.");
+      report(diags_.all().back());
+    }
+  }
+  return true;
+}
+
+bool Session::setIntegrator(const language::Statement& c) {
+  bool ok = true;
+  for (const auto& a : c.args) {
+    if (a.name == "GSTIFF" || a.name == "I3") continue;
+    if (a.name == "ERROR") integrator_.error = a.values.at(0).number;
+    else if (a.name == "HMAX") { integrator_.hmax = a.values.at(0).number; hmaxGiven_ = true; }
+    else if (a.name == "HINIT") { integrator_.hinit = a.values.at(0).number; hinitGiven_ = true; }
+    else if (a.name == "HMIN") integrator_.hmin = a.values.at(0).number;
+    else if (a.name == "KMAX") integrator_.kmax = static_cast<int>(a.values.at(0).number);
+    else if (a.name == "MAXIT") integrator_.maxit = static_cast<int>(a.values.at(0).number);
+    else if (a.name == "DEFAULT") { integrator_ = {}; hmaxGiven_ = hinitGiven_ = false; }
+    else {
+      diags_.error(a.where, c.subject(), a.name + " is not supported yet",
+                   "Supported: GSTIFF with I3, ERROR, HMAX, HINIT, HMIN, KMAX, MAXIT.");
+      report(diags_.all().back());
+      ok = false;
+    }
+  }
+  for (const auto* bad : {"ERROR", "HMAX", "HINIT", "HMIN"})
+    if (const auto* a = c.find(bad); a && (a->values.empty() || a->values[0].number <= 0)) {
+      diags_.error(a->where, c.subject(), std::string(bad) + " must be positive", "");
+      report(diags_.all().back());
+      ok = false;
+    }
+  return ok;
+}
+
+bool Session::initialConditions() {
+  const model::Model& m = *model_;
+  msg_.line("");
+  msg_.line(" Begin initial conditions (time " + fmt("%.6E", t_) + ")");
+  auto asm_ = mechanics::assemblePositions(*system_, t_, y_, 1e-10, 25);
+  for (int b = 0; b < m.bodyCount(); ++b) {
+    if (asm_.partMoves[b] > 1e-9 || asm_.partTurns[b] > 1e-9)
+      msg_.line("   PART/" + std::to_string(m.parts[m.movingParts[b]].id) + " moved by " +
+                fmt("%.6E", asm_.partMoves[b]) + " and turned by " +
+                fmt("%.6E", asm_.partTurns[b]) + " rad to satisfy the constraints");
+  }
+  if (!asm_.converged) {
+    diags_.error({m.file, 0, 0}, "",
+                 "the model cannot be assembled: " +
+                     system_->constraints().describe(asm_.worstEquation, m) +
+                     " is still violated by " + fmt("%.6E", asm_.residual) + " after " +
+                     std::to_string(asm_.iterations) + " iterations",
+                 "Check the positions and orientations of that joint's I and J markers.");
+    report(diags_.all().back());
+    return false;
+  }
+  mechanics::solveVelocities(*system_, t_, y_);
+  if (!mechanics::solveAccelerations(*system_, t_, y_, yp_)) {
+    diags_.error({m.file, 0, 0}, "",
+                 "the accelerations and constraint forces at the initial state cannot be "
+                 "determined (singular mass or constraint matrix)",
+                 "Check that every moving part has mass and inertia, or is fully constrained.");
+    report(diags_.all().back());
+    return false;
+  }
+  msg_.line(" End initial conditions: constraints satisfied to " + fmt("%.3E", asm_.residual));
+  initialized_ = true;
+  return true;
+}
+
+bool Session::writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
+  const model::Model& m = *model_;
+  if (!m.output.reqsave) return true;
+  if (!req_.isOpen()) {
+    output::RequestFileHeader h;
+    h.title = m.title;
+    h.unitsToken = m.units.token;
+    h.lengthScale = m.units.lengthScale;
+    std::vector<output::RequestEntry> entries;
+    for (const auto& r : m.requests) {
+      output::RequestEntry e;
+      e.id = r.id;
+      using RK = model::Request::Kind;
+      e.type = r.kind == RK::Displacement ? 1 : r.kind == RK::Velocity ? 2
+             : r.kind == RK::Acceleration ? 3 : r.kind == RK::Force ? 4 : 5;
+      if (r.kind != RK::Expressions) {
+        e.iMarker = m.markers[r.iMarker].id;
+        e.jMarker = r.jMarker >= 0 ? m.markers[r.jMarker].id : 0;
+      }
+      e.comment = r.comment;
+      entries.push_back(e);
+    }
+    std::string err;
+    if (!req_.open(requestFilePath(), h, entries, &err)) {
+      diags_.error({m.file, 0, 0}, "", "cannot write the request file: " + err, "");
+      report(diags_.all().back());
+      return false;
+    }
+  }
+  std::vector<std::array<double, 6>> rows;
+  rows.reserve(m.requests.size());
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  for (const auto& r : m.requests) {
+    const auto c = requestColumns(*system_, r, t, y, yp);
+    std::array<double, 6> row = {c[1], c[2], c[3], c[5], c[6], c[7]};
+    // The request file holds displacement angles in degrees.
+    if (r.kind == model::Request::Kind::Displacement)
+      for (int k = 3; k < 6; ++k) row[k] *= kDeg;
+    rows.push_back(row);
+  }
+  req_.writeStep(t, rows);
+  ++summary_.outputSteps;
+  return true;
+}
+
+bool Session::simulate(const language::Statement& c) {
+  const model::Model& m = *model_;
+  const bool kin = c.has("KINEMATICS");
+  const bool dyn = c.has("DYNAMICS");
+  const bool trans = c.has("TRANSIENT");
+  for (const char* other : {"STATICS", "INITIAL_CONDITIONS"})
+    if (c.has(other)) {
+      error(c, std::string("SIMULATE/") + other + " is not supported yet",
+            "Use SIMULATE/TRANSIENT, DYNAMICS or KINEMATICS.");
+      return false;
+    }
+  if (!kin && !dyn && !trans) {
+    error(c, "the kind of simulation is missing",
+          "Write SIMULATE/TRANSIENT (or DYNAMICS, KINEMATICS), END=..., DTOUT=... or STEPS=....");
+    return false;
+  }
+  auto end = number(c, "END");
+  auto duration = number(c, "DURATION");
+  if (!end && duration) end = t_ + *duration;
+  if (!end || *end <= t_) {
+    error(c, "END (or DURATION) must give a time after the current time " + fmt("%g", t_),
+          "Add END=<time> greater than the current time.");
+    return false;
+  }
+  auto steps = number(c, "STEPS");
+  auto dtout = number(c, "DTOUT");
+  long nOut = 0;
+  if (steps && *steps >= 1) nOut = static_cast<long>(std::llround(*steps));
+  else if (dtout && *dtout > 0) nOut = static_cast<long>(std::llround((*end - t_) / *dtout));
+  else {
+    error(c, "the output step is missing", "Add STEPS=<count> or DTOUT=<interval>.");
+    return false;
+  }
+  nOut = std::max(1L, nOut);
+  const double t0 = t_, outStep = (*end - t0) / static_cast<double>(nOut);
+
+  const bool kinematic = kin || (trans && dof_ == 0);
+  if (kin && dof_ != 0) {
+    error(c, "a kinematic analysis needs a model with zero degrees of freedom; this one has " +
+                 std::to_string(dof_),
+          "Add motions or joints until the model is fully determined, or use "
+          "SIMULATE/DYNAMICS.");
+    return false;
+  }
+  if (dyn && dof_ == 0) {
+    diags_.warning(c.where, c.subject(),
+                   "the model has zero degrees of freedom; a kinematic analysis "
+                   "(SIMULATE/KINEMATICS) would be more efficient. As requested, the simulation "
+                   "goes on with a dynamic analysis");
+    report(diags_.all().back());
+  }
+  if (!initialized_) {
+    if (!initialConditions()) return false;
+    if (!writeOutputStep(t_, y_, yp_)) return false;
+  }
+  msg_.line("");
+  msg_.line(" Begin Simulation");
+  summary_.analysis = kinematic ? "kinematic" : "dynamic";
+  const auto wallStart = std::chrono::steady_clock::now();
+  auto lastProgress = wallStart;
+  auto progress = [&](double t, long stepCount) {
+    if (!options_.progress) return;
+    const auto now = std::chrono::steady_clock::now();
+    if (now - lastProgress < std::chrono::milliseconds(500) && t < *end) return;
+    lastProgress = now;
+    const double elapsed = std::chrono::duration<double>(now - wallStart).count();
+    const double frac = (t - t0) / (*end - t0);
+    const double eta = frac > 0 ? elapsed * (1.0 - frac) / frac : 0.0;
+    std::fprintf(stderr, "\r  t = %.5g / %.5g   steps %ld   ETA %.1f s   ", t, *end, stepCount, eta);
+    std::fflush(stderr);
+  };
+
+  if (kinematic) {
+    msg_.line("  ****** Performing Kinematic Analysis ******");
+    for (long i = 1; i <= nOut; ++i) {
+      const double t = (i == nOut) ? *end : t0 + static_cast<double>(i) * outStep;
+      // First-order prediction of the positions, then Newton on the constraints.
+      const double dt = t - t_;
+      y_ += dt * yp_;
+      auto r = mechanics::assemblePositions(*system_, t, y_, 1e-12, 25);
+      if (!r.converged) {
+        diags_.error({m.file, 0, 0}, "",
+                     "kinematic analysis failed at time " + fmt("%.6E", t) + ": " +
+                         system_->constraints().describe(r.worstEquation, m) +
+                         " cannot be satisfied (residual " + fmt("%.3E", r.residual) + ")",
+                     "The mechanism may lock up or pass a singular position; check the motion "
+                     "functions.");
+        report(diags_.all().back());
+        return false;
+      }
+      mechanics::solveVelocities(*system_, t, y_);
+      if (!mechanics::solveAccelerations(*system_, t, y_, yp_)) {
+        diags_.error({m.file, 0, 0}, "", "singular constraint matrix at time " + fmt("%.6E", t),
+                     "The mechanism passes a singular configuration.");
+        report(diags_.all().back());
+        return false;
+      }
+      t_ = t;
+      ++summary_.steps;
+      if (!writeOutputStep(t_, y_, yp_)) return false;
+      progress(t_, summary_.steps);
+    }
+  } else {
+    solvers::BdfSettings s = integrator_;
+    if (!hmaxGiven_) s.hmax = outStep;  // GSTIFF's default HMAX is the output step
+    if (!hinitGiven_) s.hinit = std::min(s.hmax, 0.5 * outStep);
+    s.hinit = std::min(s.hinit, s.hmax);
+    msg_.line("  ****** Performing Dynamic Simulation using GSTIFF I3 Integrator ******");
+    msg_.line("   Integration error = " + fmt("%.6E", s.error) + ", HMAX = " + fmt("%.6E", s.hmax) +
+              ", KMAX = " + std::to_string(s.kmax) + ", MAXIT = " + std::to_string(s.maxit));
+    msg_.line("");
+    msg_.line("   Simulation      Step        Function    Cumulative   Integration");
+    msg_.line("      Time         Size       Evaluations  Steps Taken    Order");
+    MultibodyDae dae(*system_);
+    solvers::BdfIntegrator bdf(dae, s);
+    bdf.start(t_, y_, yp_);
+    const long logEvery = std::max(1L, nOut / 10);
+    for (long i = 1; i <= nOut; ++i) {
+      const double t = (i == nOut) ? *end : t0 + static_cast<double>(i) * outStep;
+      const bool ok = bdf.advanceTo(t);
+      const auto& st = bdf.statistics();
+      if (!ok) {
+        const auto& f = bdf.failure();
+        const std::string text =
+            "the dynamic analysis failed at time " + fmt("%.6E", f.time) + " (step size " +
+            fmt("%.3E", f.stepSize) + "): " + f.reason + ". The equation with the largest "
+            "error is " + dae.equationName(f.worstEquation) + " (" +
+            fmt("%.3E", f.worstResidual) + "); the variable changing most is " +
+            dae.variableName(f.worstVariable) + " (" + fmt("%.3E", f.worstChange) + ")";
+        diags_.error({m.file, 0, 0}, "", text,
+                     "Outputs up to the last successful output step are in " + prefix_ +
+                         ".req. Look for a discontinuous force or motion near that time, or "
+                         "tighten HMAX.");
+        report(diags_.all().back());
+        t_ = bdf.t();
+        return false;
+      }
+      t_ = t;
+      y_ = bdf.y();
+      Eigen::VectorXd yOut = y_, ypOut = bdf.yp();
+      // Accelerations and reaction forces consistent with the converged positions and
+      // velocities (not differenced from the integrator's history).
+      mechanics::solveAccelerations(*system_, t_, yOut, ypOut);
+      if (!writeOutputStep(t_, yOut, ypOut)) return false;
+      summary_.steps = st.steps;
+      summary_.jacobians = st.jacobianEvaluations;
+      summary_.residuals = st.residualEvaluations;
+      if (i % logEvery == 0 || i == nOut) {
+        char buf[160];
+        std::snprintf(buf, sizeof buf, "   %12.5E %12.5E %12ld %12ld %8d", t_, st.stepSize,
+                      st.residualEvaluations, st.steps, st.order);
+        msg_.line(buf);
+      }
+      progress(t_, st.steps);
+    }
+    yp_ = bdf.yp();
+  }
+  if (options_.progress) std::fprintf(stderr, "\n");
+  summary_.time = t_;
+  msg_.line(" End Simulation");
+  return true;
+}
+
+}  // namespace openmss::analysis

@@ -1,0 +1,99 @@
+#include "common/rotation.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numbers>
+
+namespace openmss {
+
+namespace {
+
+// sin and cos that are exact at multiples of 90 degrees: data sets write 90D, 180D, and
+// cos(pi/2) = 6e-17 would tilt a frame that the user meant to be exactly square, seeding
+// out-of-plane motion in planar mechanisms.
+void exactSinCos(double a, double* s, double* c) {
+  const double quarter = std::round(a / (0.5 * std::numbers::pi));
+  if (std::abs(a - quarter * 0.5 * std::numbers::pi) <= 1e-14 * std::max(1.0, std::abs(a))) {
+    static const double sv[4] = {0.0, 1.0, 0.0, -1.0};
+    static const double cv[4] = {1.0, 0.0, -1.0, 0.0};
+    const int q = static_cast<int>(((static_cast<long long>(quarter) % 4) + 4) % 4);
+    *s = sv[q];
+    *c = cv[q];
+    return;
+  }
+  *s = std::sin(a);
+  *c = std::cos(a);
+}
+
+}  // namespace
+
+Eigen::Matrix3d matrixFromEuler313(double psi, double theta, double phi) {
+  double cps, sps, cth, sth, cph, sph;
+  exactSinCos(psi, &sps, &cps);
+  exactSinCos(theta, &sth, &cth);
+  exactSinCos(phi, &sph, &cph);
+  Eigen::Matrix3d a;
+  a << cps * cph - sps * cth * sph, -cps * sph - sps * cth * cph, sps * sth,
+      sps * cph + cps * cth * sph, -sps * sph + cps * cth * cph, -cps * sth,
+      sth * sph, sth * cph, cth;
+  return a;
+}
+
+Eigen::Vector3d euler313FromMatrix(const Eigen::Matrix3d& a) {
+  const double c = std::clamp(a(2, 2), -1.0, 1.0);
+  const double theta = std::acos(c);
+  const double s = std::sqrt(a(0, 2) * a(0, 2) + a(1, 2) * a(1, 2));
+  if (s < 1e-12) {
+    // Gimbal lock: only psi + phi (theta = 0) or psi - phi (theta = pi) is defined.
+    return {std::atan2(a(1, 0), a(0, 0)), theta, 0.0};
+  }
+  return {std::atan2(a(0, 2), -a(1, 2)), theta, std::atan2(a(2, 0), a(2, 1))};
+}
+
+bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& zPoint,
+                          const Eigen::Vector3d& xPoint, bool zGiven, bool xGiven,
+                          Eigen::Matrix3d* a) {
+  Eigen::Vector3d z = Eigen::Vector3d::UnitZ();
+  if (zGiven) {
+    z = zPoint - origin;
+    if (z.norm() < 1e-12) return false;
+    z.normalize();
+  }
+  Eigen::Vector3d x;
+  if (xGiven) {
+    x = xPoint - origin;
+  } else {
+    // No x point: take the reference x axis, or y when z is along x (documented choice).
+    x = Eigen::Vector3d::UnitX();
+    if (std::abs(z.dot(x)) > 0.999) x = Eigen::Vector3d::UnitY();
+  }
+  x -= z * z.dot(x);
+  if (x.norm() < 1e-12) return false;
+  x.normalize();
+  a->col(0) = x;
+  a->col(1) = z.cross(x);
+  a->col(2) = z;
+  return true;
+}
+
+Eigen::Vector4d quaternionFromMatrix(const Eigen::Matrix3d& a) {
+  const double tr = a.trace();
+  Eigen::Vector4d q;
+  if (tr >= a(0, 0) && tr >= a(1, 1) && tr >= a(2, 2)) {
+    const double s = std::sqrt(1.0 + tr) * 2.0;
+    q << 0.25 * s, (a(2, 1) - a(1, 2)) / s, (a(0, 2) - a(2, 0)) / s, (a(1, 0) - a(0, 1)) / s;
+  } else if (a(0, 0) >= a(1, 1) && a(0, 0) >= a(2, 2)) {
+    const double s = std::sqrt(1.0 + a(0, 0) - a(1, 1) - a(2, 2)) * 2.0;
+    q << (a(2, 1) - a(1, 2)) / s, 0.25 * s, (a(0, 1) + a(1, 0)) / s, (a(0, 2) + a(2, 0)) / s;
+  } else if (a(1, 1) >= a(2, 2)) {
+    const double s = std::sqrt(1.0 - a(0, 0) + a(1, 1) - a(2, 2)) * 2.0;
+    q << (a(0, 2) - a(2, 0)) / s, (a(0, 1) + a(1, 0)) / s, 0.25 * s, (a(1, 2) + a(2, 1)) / s;
+  } else {
+    const double s = std::sqrt(1.0 - a(0, 0) - a(1, 1) + a(2, 2)) * 2.0;
+    q << (a(1, 0) - a(0, 1)) / s, (a(0, 2) + a(2, 0)) / s, (a(1, 2) + a(2, 1)) / s, 0.25 * s;
+  }
+  if (q(0) < 0) q = -q;
+  return q.normalized();
+}
+
+}  // namespace openmss

@@ -1,0 +1,26 @@
+#pragma once
+// Orientation conventions of ADAMS (docs/theory.md, "Frames and angles"): body-fixed 3-1-3
+// Euler angles (psi, theta, phi), axis-point frames, Euler parameters.
+
+#include <Eigen/Dense>
+
+namespace openmss {
+
+// A = Rz(psi) Rx(theta) Rz(phi): columns are the rotated frame's axes in the reference frame.
+Eigen::Matrix3d matrixFromEuler313(double psi, double theta, double phi);
+// Inverse of the above; theta in [0, pi]. At theta = 0 or pi psi and phi are not separable:
+// psi takes the whole rotation and phi = 0.
+Eigen::Vector3d euler313FromMatrix(const Eigen::Matrix3d& a);
+// Body-fixed 1-2-3 and 3-2-1 and the other sequences used by ORIENT are derived in the
+// mechanics from the matrix.
+
+// Axis-point frame: z along (zPoint - origin); x toward xPoint, made orthogonal to z.
+// Returns false when the points are degenerate (coincident or collinear).
+bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& zPoint,
+                          const Eigen::Vector3d& xPoint, bool zGiven, bool xGiven,
+                          Eigen::Matrix3d* a);
+
+// Unit quaternion (e0, e1, e2, e3) with e0 >= 0 of a rotation matrix (Shepperd's method).
+Eigen::Vector4d quaternionFromMatrix(const Eigen::Matrix3d& a);
+
+}  // namespace openmss

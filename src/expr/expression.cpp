@@ -1,0 +1,74 @@
+#include "expr/expression.hpp"
+
+#include <utility>
+
+#include "expr/compiler.hpp"
+#include "expr/parser.hpp"
+#include "expr/program.hpp"
+
+namespace openmss::expr {
+
+Expression::Expression() = default;
+Expression::~Expression() = default;
+Expression::Expression(Expression&&) noexcept = default;
+Expression& Expression::operator=(Expression&&) noexcept = default;
+
+Expression::Expression(const Expression& other)
+    : program_(other.program_ ? std::make_unique<Program>(*other.program_) : nullptr) {}
+
+Expression& Expression::operator=(const Expression& other) {
+  if (this != &other) {
+    program_ = other.program_ ? std::make_unique<Program>(*other.program_) : nullptr;
+  }
+  return *this;
+}
+
+bool Expression::parse(const std::string& text, const SourceLocation& where,
+                       const std::string& subject, Diagnostics& diags, Expression& out) {
+  ParseResult parsed = parseExpression(text);
+  if (!parsed.ok()) {
+    for (const ExpressionError& error : parsed.errors) {
+      SourceLocation at = where;
+      // The file column is exact when the expression's text starts at where.column and sits
+      // on one line, which is how data-set readers hand expressions over.
+      if (where.column > 0) at.column = where.column + error.column - 1;
+      diags.error(at, subject, error.message, error.hint);
+    }
+    return false;
+  }
+  const std::size_t hostCount = parsed.hostCalls.size();
+  out.program_ = std::make_unique<Program>(text, std::move(parsed.hostCalls),
+                                           compileProgram(parsed.root, hostCount));
+  return true;
+}
+
+const std::string& Expression::text() const {
+  static const std::string kEmpty;
+  return program_ ? program_->text() : kEmpty;
+}
+
+const std::vector<HostCall>& Expression::hostCalls() const {
+  static const std::vector<HostCall> kNone;
+  return program_ ? program_->hostCalls() : kNone;
+}
+
+bool Expression::dependsOnTime() const { return program_ && program_->dependsOnTime(); }
+
+double Expression::evaluate(const double* hostValues, double time) const {
+  return program_ ? program_->evaluate(hostValues, time) : 0.0;
+}
+
+double Expression::evaluate(const double* hostValues, double time, double* dHost,
+                            double* dTime) const {
+  if (!program_) {
+    if (dTime != nullptr) *dTime = 0.0;
+    return 0.0;
+  }
+  return program_->evaluate(hostValues, time, dHost, dTime);
+}
+
+TimeJet Expression::evaluateTimeJet(double time) const {
+  return program_ ? program_->evaluateTimeJet(time) : TimeJet{};
+}
+
+}  // namespace openmss::expr

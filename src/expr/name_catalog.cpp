@@ -1,0 +1,154 @@
+#include "expr/name_catalog.hpp"
+
+#include <numbers>
+
+namespace openmss::expr {
+namespace {
+
+constexpr double kDegreesToRadians = std::numbers::pi / 180.0;
+constexpr double kRadiansToDegrees = 180.0 / std::numbers::pi;
+
+NameInfo constantName(std::string_view name, double value) {
+  return {name, NameKind::Constant, 0, 0, Builtin::Abs, value, name};
+}
+
+NameInfo builtin(std::string_view name, Builtin id, int minArgs, int maxArgs,
+                 std::string_view usage) {
+  return {name, NameKind::Builtin, minArgs, maxArgs, id, 0.0, usage};
+}
+
+NameInfo host(std::string_view name, int minArgs, int maxArgs, std::string_view usage) {
+  return {name, NameKind::HostFunction, minArgs, maxArgs, Builtin::Abs, 0.0, usage};
+}
+
+NameInfo hostVariable(std::string_view name) {
+  return {name, NameKind::HostVariable, 0, 0, Builtin::Abs, 0.0, name};
+}
+
+NameInfo unsupported(std::string_view name) {
+  return {name, NameKind::Unsupported, 0, 0, Builtin::Abs, 0.0, name};
+}
+
+NameInfo vectorName(std::string_view name) {
+  return {name, NameKind::Vector, 0, 0, Builtin::Abs, 0.0, name};
+}
+
+std::vector<NameInfo> buildCatalog() {
+  std::vector<NameInfo> c;
+  // Constants and TIME (digest 3.2).
+  c.push_back(constantName("PI", std::numbers::pi));
+  c.push_back(constantName("DTOR", kDegreesToRadians));
+  c.push_back(constantName("RTOD", kRadiansToDegrees));
+  c.push_back({"TIME", NameKind::Time, 0, 0, Builtin::Abs, 0.0, "TIME"});
+
+  // FORTRAN intrinsics (digest 3.3). MAX and MIN accept two or more arguments as in FORTRAN.
+  c.push_back(builtin("ABS", Builtin::Abs, 1, 1, "ABS(a)"));
+  c.push_back(builtin("SQRT", Builtin::Sqrt, 1, 1, "SQRT(a)"));
+  c.push_back(builtin("EXP", Builtin::Exp, 1, 1, "EXP(a)"));
+  c.push_back(builtin("LOG", Builtin::Log, 1, 1, "LOG(a)"));
+  c.push_back(builtin("LOG10", Builtin::Log10, 1, 1, "LOG10(a)"));
+  c.push_back(builtin("SIN", Builtin::Sin, 1, 1, "SIN(a)"));
+  c.push_back(builtin("COS", Builtin::Cos, 1, 1, "COS(a)"));
+  c.push_back(builtin("TAN", Builtin::Tan, 1, 1, "TAN(a)"));
+  c.push_back(builtin("ASIN", Builtin::Asin, 1, 1, "ASIN(a)"));
+  c.push_back(builtin("ACOS", Builtin::Acos, 1, 1, "ACOS(a)"));
+  c.push_back(builtin("ATAN", Builtin::Atan, 1, 1, "ATAN(a)"));
+  c.push_back(builtin("ATAN2", Builtin::Atan2, 2, 2, "ATAN2(y, x)"));
+  c.push_back(builtin("SINH", Builtin::Sinh, 1, 1, "SINH(a)"));
+  c.push_back(builtin("COSH", Builtin::Cosh, 1, 1, "COSH(a)"));
+  c.push_back(builtin("TANH", Builtin::Tanh, 1, 1, "TANH(a)"));
+  c.push_back(builtin("MAX", Builtin::Max, 2, kMaxBuiltinArguments, "MAX(a, b[, ...])"));
+  c.push_back(builtin("MIN", Builtin::Min, 2, kMaxBuiltinArguments, "MIN(a, b[, ...])"));
+  c.push_back(builtin("MOD", Builtin::Mod, 2, 2, "MOD(a, b)"));
+  c.push_back(builtin("SIGN", Builtin::Sign, 2, 2, "SIGN(a, b)"));
+  c.push_back(builtin("DIM", Builtin::Dim, 2, 2, "DIM(a, b)"));
+  c.push_back(builtin("AINT", Builtin::Aint, 1, 1, "AINT(a)"));
+  c.push_back(builtin("ANINT", Builtin::Anint, 1, 1, "ANINT(a)"));
+
+  // General-purpose functions (digest 3.4). Series take up to 31 coefficients (order 30).
+  c.push_back(builtin("STEP", Builtin::Step, 5, 5, "STEP(x, x0, h0, x1, h1)"));
+  c.push_back(builtin("STEP5", Builtin::Step5, 5, 5, "STEP5(x, x0, h0, x1, h1)"));
+  c.push_back(builtin("HAVSIN", Builtin::Havsin, 5, 5, "HAVSIN(x, x0, h0, x1, h1)"));
+  c.push_back(builtin("SHF", Builtin::Shf, 6, 6, "SHF(x, x0, a, w, phi, b)"));
+  c.push_back(builtin("POLY", Builtin::Poly, 3, 33, "POLY(x, x0, a0[, a1, ..., a30])"));
+  c.push_back(builtin("CHEBY", Builtin::Cheby, 3, 33, "CHEBY(x, x0, a0[, a1, ..., a30])"));
+  c.push_back(builtin("FORCOS", Builtin::Forcos, 4, 34, "FORCOS(x, x0, w, a0[, a1, ..., a30])"));
+  c.push_back(builtin("FORSIN", Builtin::Forsin, 4, 34, "FORSIN(x, x0, w, a0[, a1, ..., a30])"));
+  c.push_back(builtin("SWEEP", Builtin::Sweep, 7, 7, "SWEEP(x, a, x0, f0, x1, f1, dx)"));
+  c.push_back(builtin("IMPACT", Builtin::Impact, 7, 7, "IMPACT(x, xdot, x1, k, e, cmax, d)"));
+  c.push_back(builtin("BISTOP", Builtin::Bistop, 8, 8, "BISTOP(x, xdot, x1, x2, k, e, cmax, d)"));
+  c.push_back({"IF", NameKind::Conditional, 4, 4, Builtin::Abs, 0.0, "IF(e1 : e2, e3, e4)"});
+
+  // Marker measures (digest 3.6): i [, j] [, k] [, l] with 0 as the placeholder.
+  for (std::string_view n : {"DX", "DY", "DZ"}) c.push_back(host(n, 1, 3, "(i[, j][, k])"));
+  c.push_back(host("DM", 1, 2, "DM(i[, j])"));
+  for (std::string_view n : {"VX", "VY", "VZ"}) c.push_back(host(n, 1, 4, "(i[, j][, k][, l])"));
+  c.push_back(host("VM", 1, 3, "VM(i[, j][, l])"));
+  c.push_back(host("VR", 1, 3, "VR(i[, j][, l])"));
+  for (std::string_view n : {"WX", "WY", "WZ"}) c.push_back(host(n, 1, 3, "(i[, j][, k])"));
+  c.push_back(host("WM", 1, 2, "WM(i[, j])"));
+  for (std::string_view n : {"ACCX", "ACCY", "ACCZ"}) {
+    c.push_back(host(n, 1, 4, "(i[, j][, k][, l])"));
+  }
+  c.push_back(host("ACCM", 1, 3, "ACCM(i[, j][, l])"));
+  for (std::string_view n : {"WDTX", "WDTY", "WDTZ"}) {
+    c.push_back(host(n, 1, 4, "(i[, j][, k][, l])"));
+  }
+  c.push_back(host("WDTM", 1, 3, "WDTM(i[, j][, l])"));
+  for (std::string_view n : {"AX", "AY", "AZ", "PSI", "THETA", "PHI", "YAW", "PITCH", "ROLL"}) {
+    c.push_back(host(n, 1, 2, "(i[, j])"));
+  }
+  c.push_back(host("ORIENT", 3, 4, "ORIENT(sys, comp, i[, j])"));
+  c.push_back(host("INCANG", 3, 3, "INCANG(i, j, k)"));
+
+  // Force measures (digest 3.7).
+  for (std::string_view n : {"FX", "FY", "FZ", "FM", "TX", "TY", "TZ", "TM"}) {
+    c.push_back(host(n, 1, 3, "(i[, j][, k])"));
+  }
+  for (std::string_view n : {"JOINT", "JPRIM", "MOTION", "SFORCE", "SPDP", "BUSH", "FIELD", "BEAM",
+                             "VFORCE", "VTORQ", "GFORCE", "PTCV", "CVCV", "FRICTION"}) {
+    c.push_back(host(n, 4, 4, "(id, jflag, comp, rm)"));
+  }
+  c.push_back(host("NFORCE", 4, 4, "NFORCE(id, marker, comp, rm)"));
+
+  // System-element access (digest 3.8).
+  c.push_back(host("VARVAL", 1, 1, "VARVAL(id)"));
+  c.push_back(host("DIF", 1, 1, "DIF(id)"));
+  c.push_back(host("DIF1", 1, 1, "DIF1(id)"));
+  c.push_back(host("ARYVAL", 2, 2, "ARYVAL(id, n)"));
+  c.push_back(host("PINVAL", 2, 2, "PINVAL(id, n)"));
+  c.push_back(host("POUVAL", 2, 2, "POUVAL(id, n)"));
+  c.push_back(host("SENVAL", 1, 1, "SENVAL(id)"));
+
+  // Analysis variables (digest 3.2).
+  for (std::string_view n : {"MODE", "HSIZE", "ORDER", "NJAC", "NRHS", "CPU"}) {
+    c.push_back(hostVariable(n));
+  }
+
+  // Need model data or user code that expressions cannot reach yet.
+  for (std::string_view n : {"AKISPL", "CUBSPL", "CURVE", "INTERP", "DELAY", "INVPSD", "AO", "USER",
+                             "FXFREQ", "FXMODE"}) {
+    c.push_back(unsupported(n));
+  }
+  for (std::string_view n : {"DXYZ", "VXYZ", "WXYZ", "ACCXYZ", "WDTXYZ", "FXYZ", "TXYZ", "MAG",
+                             "UV", "UVX", "UVY", "UVZ", "TRANS"}) {
+    c.push_back(vectorName(n));
+  }
+  return c;
+}
+
+}  // namespace
+
+const std::vector<NameInfo>& allNames() {
+  static const std::vector<NameInfo> catalog = buildCatalog();
+  return catalog;
+}
+
+const NameInfo* findName(std::string_view upperName) {
+  for (const NameInfo& info : allNames()) {
+    if (info.name == upperName) return &info;
+  }
+  return nullptr;
+}
+
+}  // namespace openmss::expr

@@ -1,0 +1,109 @@
+#pragma once
+// The compiled form of an expression: a flat list of instructions in single-assignment form.
+// Instruction i writes slot i of a work array, and its operands are indices of earlier slots,
+// so one list serves three evaluators:
+//  * values only (T = double);
+//  * value and exact first partials by reverse mode: a forward sweep stores each executed
+//    instruction's local partials, a backward sweep accumulates adjoints into the host values
+//    and TIME;
+//  * time jets (T = Jet2): value, d/dt and d2/dt2 propagated forward.
+// IF is compiled to Branch / Jump / Join so that only the selected branch runs.
+//
+// Work arrays: programs of up to kStackSlots instructions use arrays on the caller's stack, so
+// evaluation allocates nothing and any number of threads may evaluate one Program at once.
+// Larger programs use a scratch buffer owned by the Program and sized at compile time; a
+// thread that finds it in use by another thread falls back to a temporary buffer (allocating)
+// rather than waiting.
+
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "expr/builtin.hpp"
+#include "expr/expression.hpp"
+#include "expr/jet.hpp"
+
+namespace openmss::expr {
+
+enum class OpCode : std::uint8_t {
+  Constant,  // constants[aux]
+  LoadHost,  // hostValues[aux]
+  LoadTime,  // TIME
+  Negate,
+  Add,
+  Subtract,
+  Multiply,
+  Divide,
+  Power,
+  Call,    // builtin applied to the operands
+  Branch,  // operand 0 is IF's e1; jumps to jumpTargets[aux + choice], choice 0/1/2 for <0/=0/>0
+  Jump,    // to instruction aux
+  Join,    // operands e2, e3, e4 roots and the Branch; takes the value of the chosen root
+};
+
+struct Instruction {
+  OpCode op = OpCode::Constant;
+  Builtin builtin = Builtin::Abs;
+  std::uint16_t operandCount = 0;
+  std::uint32_t firstOperand = 0;     // into ProgramCode::operands
+  std::uint32_t firstPartial = 0;     // into the partials work array
+  std::uint32_t aux = 0;              // see OpCode
+  std::uint64_t varyingOperands = 0;  // bit j: operand j is not a compile-time constant
+};
+
+struct ProgramCode {
+  std::vector<Instruction> instructions;
+  std::vector<std::uint32_t> operands;
+  std::vector<double> constants;
+  std::vector<std::uint32_t> jumpTargets;
+  std::uint32_t result = 0;        // slot holding the expression's value
+  std::uint32_t partialCount = 0;  // size of the partials work array
+  std::uint32_t timeSlot = 0;      // slot of LoadTime
+  bool usesTime = false;           // TIME survives constant folding
+  // Host value k is loaded into slot k (the loads come first, so a host call used inside one IF
+  // branch and again outside it has a value whichever branch ran).
+};
+
+class Program {
+ public:
+  Program(std::string text, std::vector<HostCall> hostCalls, ProgramCode code);
+  Program(const Program& other);
+  Program& operator=(const Program&) = delete;
+  ~Program();
+
+  const std::string& text() const { return text_; }
+  const std::vector<HostCall>& hostCalls() const { return hostCalls_; }
+  bool dependsOnTime() const { return code_.usesTime; }
+  std::size_t instructionCount() const { return code_.instructions.size(); }
+
+  double evaluate(const double* hostValues, double time) const;
+  double evaluate(const double* hostValues, double time, double* dHost, double* dTime) const;
+  TimeJet evaluateTimeJet(double time) const;
+
+  static constexpr std::size_t kStackSlots = 256;
+  static constexpr std::size_t kStackPartials = 512;
+
+ private:
+  struct Scratch;
+  class ScratchLease;
+
+  template <typename T>
+  T forward(T* values, const double* hostValues, const T& time) const;
+  double forwardWithPartials(double* values, double* partials, std::uint32_t* trace,
+                             std::uint32_t& traceLength, const double* hostValues,
+                             double time) const;
+  void backward(const double* partials, double* adjoints, const std::uint32_t* trace,
+                std::uint32_t traceLength, double* dHost, double* dTime) const;
+  double evaluateDerivatives(double* values, double* partials, double* adjoints,
+                             std::uint32_t* trace, const double* hostValues, double time,
+                             double* dHost, double* dTime) const;
+  bool fitsOnStack() const;
+
+  std::string text_;
+  std::vector<HostCall> hostCalls_;
+  ProgramCode code_;
+  std::unique_ptr<Scratch> scratch_;  // only for programs too large for the stack arrays
+};
+
+}  // namespace openmss::expr

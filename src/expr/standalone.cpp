@@ -1,0 +1,29 @@
+#include "expr/standalone.hpp"
+
+#include "expr/expression.hpp"
+#include "expr/expression_error.hpp"
+
+namespace openmss::expr {
+
+bool evaluateStandalone(const std::string& text, double time, double* value, double* dvalueDtime,
+                        Diagnostics& diags) {
+  const SourceLocation where{"<command line>", 0, 0};
+  Expression expression;
+  if (!Expression::parse(text, where, "", diags, expression)) return false;
+  if (!expression.hostCalls().empty()) {
+    for (const HostCall& call : expression.hostCalls()) {
+      diags.error(where, "",
+                  call.name + " " + atColumn(call.column) +
+                      " needs a model, and the calculator evaluates expressions without one",
+                  "Use numbers, constants, TIME and functions such as STEP or POLY.");
+    }
+    return false;
+  }
+  double derivative = 0.0;
+  const double result = expression.evaluate(nullptr, time, nullptr, &derivative);
+  if (value != nullptr) *value = result;
+  if (dvalueDtime != nullptr) *dvalueDtime = derivative;
+  return true;
+}
+
+}  // namespace openmss::expr

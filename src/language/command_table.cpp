@@ -1,0 +1,106 @@
+// The command table (.acf files and the interactive prompt): the commands of the digest §4.1
+// and of the seed §6.6. A command that shares its name with a statement redefines or lists
+// that statement's data, so it takes the statement's arguments plus LIST; none of them is
+// mandatory in a command because a command changes only what it names.
+
+#include <algorithm>
+
+#include "language/schema_builder.hpp"
+#include "language/statement_table.hpp"
+
+namespace openmss::language {
+
+using namespace schema_builder;
+
+namespace {
+
+// Commands that redefine or list the statement of the same name.
+const std::vector<std::string> kStatementCommands = {
+    "PART",         "MARKER",      "FLEX_BODY",   "JOINT",      "MOTION",     "GCON",    "UCON",
+    "ACCGRAV",      "BEAM",        "BUSHING",     "FIELD",      "FRICTION",   "GFORCE",  "SFORCE",
+    "SPRINGDAMPER", "VFORCE",      "VTORQUE",     "ARRAY",      "SPLINE",     "STRING",  "VARIABLE",
+    "DEBUG",        "EQUILIBRIUM", "IC",          "INTEGRATOR", "KINEMATICS", "LSOLVER", "SENSOR",
+    "OUTPUT",       "REQUEST",     "ENVIRONMENT", "PREFERENCES"};
+
+// Element kinds that ACTIVATE and DEACTIVATE switch.
+const std::vector<std::string> kSwitchableElements = {
+    "BEAM",   "BUSHING",      "CONTACT", "CLEARANCE", "COUPLER",  "CVCV",   "DIFF",
+    "FIELD",  "FRICTION",     "GCON",    "GEAR",      "GFORCE",   "GSE",    "JOINT",
+    "JPRIM",  "LSE",          "MFORCE",  "MOTION",    "NFORCE",   "PTCV",   "SENSOR",
+    "SFORCE", "SPRINGDAMPER", "TFSISO",  "UCON",      "VARIABLE", "VFORCE", "VTORQUE"};
+
+StatementSpec elementSwitch(std::string name) {
+  std::vector<ArgumentSpec> a;
+  for (const auto& e : kSwitchableElements) a.push_back(flag(e));
+  a.push_back(integers("ID"));
+  a.push_back(integer("RANGE", 2, 2));
+  return statement(std::move(name), IdRule::NotAllowed, a);
+}
+
+// The FORTRAN-era integrator commands GSTIFF/WSTIFF/DSTIFF set the parameters of one method.
+StatementSpec integratorMethod(std::string name) {
+  return statement(std::move(name), IdRule::NotAllowed,
+                   {real("ERROR"), real("HINIT"), real("HMAX"), real("HMIN"), integer("KMAX"),
+                    integer("MAXIT"), word("PATTERN", {"T", "F", "TRUE", "FALSE"}, 1, 10),
+                    word("INTERPOLATE", {"ON", "OFF"}), flag("DEFAULT"), flag("LIST")});
+}
+
+}  // namespace
+
+std::vector<StatementSpec> buildCommandTable(const std::vector<StatementSpec>& statements) {
+  std::vector<StatementSpec> t;
+  for (const auto& name : kStatementCommands) {
+    auto it = std::find_if(statements.begin(), statements.end(),
+                           [&](const StatementSpec& s) { return s.name == name; });
+    if (it == statements.end()) continue;
+    StatementSpec c = *it;
+    for (auto& a : c.arguments) a.required = false;
+    c.arguments.push_back(flag("LIST"));
+    t.push_back(std::move(c));
+  }
+  const auto N = IdRule::NotAllowed;
+  t.push_back(integratorMethod("GSTIFF"));
+  t.push_back(integratorMethod("WSTIFF"));
+  t.push_back(integratorMethod("DSTIFF"));
+
+  // Simulation.
+  t.push_back(elementSwitch("ACTIVATE"));
+  t.push_back(elementSwitch("DEACTIVATE"));
+  t.push_back(statement("CONTROL", N, {expression("FUNCTION"), word("ROUTINE")}));
+  t.push_back(statement("FILE", N, {word("COMMAND"), word("MODEL"), word("OUTPUT_PREFIX")}));
+  t.push_back(statement(
+      "LINEAR", N,
+      {flag("EIGENSOL"), flag("STATEMAT"), flag("MKB"), flag("EXPORT"), integer("PINPUT"),
+       integer("POUTPUT"), integer("PSTATE"), flag("NODAMPIN"), word("FORMAT"), word("FILE"),
+       integers("COORDS"), flag("ENERGY"), flag("DISSIPAT"), flag("KINETIC"), flag("NOVECTOR")}));
+  t.push_back(statement(
+      "RELOAD", N,
+      {flag("STATES"), flag("SYSTEM"), word("FILE"), word("OUTPUT_PREFIX"), text("TITLE")}));
+  t.push_back(statement("SAVE", N, {flag("STATES"), flag("SYSTEM"), word("FILE")}));
+  t.push_back(statement(
+      "SIMULATE", N,
+      {flag("DYNAMICS"), flag("KINEMATICS"), flag("STATICS"), flag("TRANSIENT"),
+       flag("INITIAL_CONDITIONS"), flag("DISPLACEMENT"), flag("VELOCITY"), flag("ACCELERATION"),
+       real("END"), real("DURATION"), integer("STEPS"), real("DTOUT")}));
+  t.push_back(statement("STOP", N, {}));
+
+  // Information.
+  t.push_back(statement("HELP", N, {}));
+  t.push_back(statement("INFO", N,
+                        {flag("DISPLACEMENT"), flag("VELOCITY"), flag("ACCELERATION"),
+                         flag("FORCE"), integer("I"), integer("J"), integer("RM")}));
+  t.push_back(statement("MENU", N, {}));
+  t.push_back(statement("SHOW", N, {flag("CPU"), flag("GRAPHICS"), flag("STATUS"), flag("TIME")}));
+  t.push_back(statement("TIME", N, {}));
+
+  // Interactive graphics (seed §6.6.10).
+  for (const char* name :
+       {"AINIT", "AUTOSCALE", "BACKUP", "ZOOM", "CENTER", "DRAW", "SET", "RETURN"})
+    t.push_back(statement(name, N, {}));
+  t.push_back(statement("ERASE", N, {integer("ID", 1, 3)}));
+  t.push_back(statement("RESTORE", N, {integer("ID", 1, 3)}));
+  t.push_back(statement("PLOT", N, {integer("REQUEST"), integer("COMPONENT")}));
+  return t;
+}
+
+}  // namespace openmss::language

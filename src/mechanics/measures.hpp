@@ -1,0 +1,84 @@
+#pragma once
+// Values of the model measures that function expressions read (DX, DM, VR, WZ, ORIENT, ...),
+// templated on the scalar so that force functions get exact derivatives through them.
+
+#include <cmath>
+
+#include "common/rotation.hpp"
+#include "mechanics/pose.hpp"
+#include "model/measure.hpp"
+
+namespace openmss::mechanics {
+
+template <class T>
+MarkerState<T> markerOrGround(const model::Model& m, const StateLayout& l, int marker,
+                              const T* y) {
+  if (marker >= 0) return markerState(m, l, marker, y);
+  MarkerState<T> g;
+  g.a = M3<T>::from(Eigen::Matrix3d::Identity().eval());
+  return g;
+}
+
+// Position- and velocity-level measures. Returns false for kinds that need accelerations or
+// reaction forces (those are evaluated by the output code from a solved state).
+template <class T>
+bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::Measure& ms,
+                      const T* y, T* out) {
+  using K = model::MeasureKind;
+  const MarkerState<T> i = markerOrGround(m, l, ms.i, y);
+  const MarkerState<T> j = markerOrGround(m, l, ms.j, y);
+  const M3<T> k = ms.k >= 0 ? markerState(m, l, ms.k, y).a
+                            : M3<T>::from(Eigen::Matrix3d::Identity().eval());
+  const V3<T> d = i.p - j.p;
+  const V3<T> v = i.pdot - j.pdot;
+  const V3<T> w = i.w - j.w;
+  switch (ms.kind) {
+    case K::DX: *out = dot(d, k.c[0]); return true;
+    case K::DY: *out = dot(d, k.c[1]); return true;
+    case K::DZ: *out = dot(d, k.c[2]); return true;
+    case K::DM: *out = norm(d); return true;
+    case K::VX: *out = dot(v, k.c[0]); return true;
+    case K::VY: *out = dot(v, k.c[1]); return true;
+    case K::VZ: *out = dot(v, k.c[2]); return true;
+    case K::VM: *out = norm(v); return true;
+    case K::VR: *out = dot(v, d) / norm(d); return true;
+    case K::WX: *out = dot(w, k.c[0]); return true;
+    case K::WY: *out = dot(w, k.c[1]); return true;
+    case K::WZ: *out = dot(w, k.c[2]); return true;
+    case K::WM: *out = norm(w); return true;
+    case K::PSI: case K::THETA: case K::PHI: {
+      // Body 3-1-3 angles of I relative to J from R = A_J^T A_I.
+      const M3<T> r = j.a.transpose() * i.a;
+      if (ms.kind == K::THETA) *out = acosOf(r.at(2, 2));
+      else if (ms.kind == K::PSI) *out = atan2Of(r.at(0, 2), -r.at(1, 2));
+      else *out = atan2Of(r.at(2, 0), r.at(2, 1));
+      return true;
+    }
+    case K::YAW: case K::PITCH: case K::ROLL: {
+      // Body 3-2-1 angles; PITCH is the negative of the second angle (ADAMS convention).
+      const M3<T> r = j.a.transpose() * i.a;
+      if (ms.kind == K::YAW) *out = atan2Of(r.at(1, 0), r.at(0, 0));
+      else if (ms.kind == K::ROLL) *out = atan2Of(r.at(2, 1), r.at(2, 2));
+      else {
+        const T s = r.at(2, 0);
+        *out = atan2Of(s, sqrtOf(r.at(2, 1) * r.at(2, 1) + r.at(2, 2) * r.at(2, 2)));
+      }
+      return true;
+    }
+    case K::Orient: {
+      if constexpr (std::is_same_v<T, double>) {
+        const M3<T> r = j.a.transpose() * i.a;
+        const Eigen::Vector4d q = quaternionFromMatrix(toEigen(r));
+        if (ms.code == 27) {
+          *out = q(ms.component - 1);
+          return true;
+        }
+      }
+      return false;
+    }
+    default:
+      return false;
+  }
+}
+
+}  // namespace openmss::mechanics

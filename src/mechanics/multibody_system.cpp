@@ -1,0 +1,243 @@
+#include "mechanics/multibody_system.hpp"
+
+#include <numbers>
+
+#include "common/rotation.hpp"
+
+namespace openmss::mechanics {
+
+MultibodySystem::MultibodySystem(const model::Model& model)
+    : model_(&model), constraints_(model) {
+  layout_.bodies = model.bodyCount();
+  layout_.constraintEquations = constraints_.size();
+  for (int p : model.movingParts) {
+    mass_.push_back(model.parts[p].mass / model.units.ucf);
+    inertia_.push_back(model.parts[p].inertia / model.units.ucf);
+  }
+}
+
+double MultibodySystem::wrapDelta(double geometryValue, double target) {
+  // A rotation angle from atan2 lies in (-pi, pi]; the motion's target grows without bound.
+  // The equation compares them modulo 2 pi: this is the whole turns to take off.
+  const double twoPi = 2.0 * std::numbers::pi;
+  return twoPi * std::round((geometryValue - target) / twoPi);
+}
+
+Eigen::VectorXd MultibodySystem::initialState() const {
+  Eigen::VectorXd y = Eigen::VectorXd::Zero(layout_.size());
+  for (int b = 0; b < layout_.bodies; ++b) {
+    const model::Part& p = model_->parts[model_->movingParts[b]];
+    const int o = layout_.body(b);
+    y.segment<3>(o + StateLayout::kR) = p.position;
+    y.segment<4>(o + StateLayout::kE) = quaternionFromMatrix(p.orientation);
+    for (int c = 0; c < 3; ++c) {
+      y(o + StateLayout::kV + c) = p.velocity[c].value_or(0.0);
+      y(o + StateLayout::kW + c) = p.angularVelocity[c].value_or(0.0);
+    }
+  }
+  return y;
+}
+
+void MultibodySystem::newtonMatrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                   double cj, Eigen::MatrixXd& jac) const {
+  using D = Dual<double>;
+  const int n = layout_.size();
+  jac.resize(n, n);
+  std::vector<D> yd(n), ypd(n), g(n);
+  for (int i = 0; i < n; ++i) {
+    yd[i] = D(y(i), 0.0);
+    ypd[i] = D(yp(i), 0.0);
+  }
+  for (int c = 0; c < n; ++c) {
+    // Direction e_c in y and cj e_c in y' (y' = cj y + const during the corrector).
+    yd[c].d = 1.0;
+    ypd[c].d = layout_.differential(c) ? cj : 0.0;
+    for (int i = 0; i < n; ++i) g[i] = D(0.0, 0.0);
+    residual(t, yd.data(), ypd.data(), g.data());
+    for (int r = 0; r < n; ++r) jac(r, c) = g[r].d;
+    yd[c].d = 0.0;
+    ypd[c].d = 0.0;
+  }
+}
+
+expr::TimeJet MultibodySystem::motionJet(int k, double t) const {
+  const ConstraintEquation& eq = constraints_.equations()[k];
+  return model_->motions[eq.motion].function.evaluateTimeJet(t);
+}
+
+double MultibodySystem::constraintValue(int k, double t, const double* y) const {
+  const ConstraintEquation& eq = constraints_.equations()[k];
+  double value = ConstraintSet::geometry(eq, frame(eq.iMarker, y), frame(eq.jMarker, y));
+  if (eq.motion >= 0) {
+    const double target = motionJet(k, t).value;
+    value -= target;
+    if (eq.kind == ConstraintEquation::Kind::MotionRotation)
+      value -= wrapDelta(value + target, target);
+  }
+  return value;
+}
+
+void MultibodySystem::constraintRow(int k, const double* y, double* row) const {
+  const int nb = layout_.bodies;
+  std::vector<double> g(layout_.size(), 0.0);
+  addConstraintForce(constraints_.equations()[k], y, 1.0, g.data());
+  for (int b = 0; b < nb; ++b) {
+    for (int c = 0; c < 3; ++c) {
+      row[6 * b + c] = g[layout_.body(b) + StateLayout::kV + c];
+      row[6 * b + 3 + c] = g[layout_.body(b) + StateLayout::kW + c];
+    }
+  }
+}
+
+void MultibodySystem::constraintRates(int k, const double* y, double* first,
+                                      double* second) const {
+  // Evaluate the geometry along the path the markers follow with the current velocities and
+  // zero accelerations, with second-order jets: r(s) = r + s v, A(s) = A exp(s [w]).
+  using J = Dual<Dual<double>>;
+  const ConstraintEquation& eq = constraints_.equations()[k];
+  Frame<J> f[2];
+  const int markers[2] = {eq.iMarker, eq.jMarker};
+  for (int side = 0; side < 2; ++side) {
+    const model::Marker& mk = model_->markers[markers[side]];
+    const int body = model_->parts[mk.part].body;
+    const Frame<double> base = frame(markers[side], y);
+    V3<double> dp(0, 0, 0), ddp(0, 0, 0);
+    M3<double> da, dda;
+    for (int r = 0; r < 3; ++r) da.c[r] = dda.c[r] = V3<double>(0, 0, 0);
+    if (body >= 0) {
+      const BodyPose<double> pose = bodyPose(layout_, body, y);
+      const V3<double> wb{y[layout_.body(body) + StateLayout::kW],
+                          y[layout_.body(body) + StateLayout::kW + 1],
+                          y[layout_.body(body) + StateLayout::kW + 2]};
+      const V3<double> sb = V3<double>::from(mk.position);
+      dp = pose.v + pose.a * cross(wb, sb);
+      ddp = pose.a * cross(wb, cross(wb, sb));
+      const M3<double> ab = M3<double>::from(mk.orientation);
+      for (int r = 0; r < 3; ++r) {
+        da.c[r] = pose.a * cross(wb, ab.c[r]);
+        dda.c[r] = pose.a * cross(wb, cross(wb, ab.c[r]));
+      }
+    }
+    for (int c = 0; c < 3; ++c) {
+      f[side].p[c] = J(Dual<double>(base.p[c], dp[c]), Dual<double>(dp[c], ddp[c]));
+      for (int r = 0; r < 3; ++r)
+        f[side].a.c[r][c] = J(Dual<double>(base.a.c[r][c], da.c[r][c]),
+                              Dual<double>(da.c[r][c], dda.c[r][c]));
+    }
+  }
+  const J v = ConstraintSet::geometry(eq, f[0], f[1]);
+  *first = v.v.d;
+  *second = v.d.d;
+}
+
+void MultibodySystem::appliedForces(double t, const double* y, Eigen::VectorXd& q) const {
+  const int nb = layout_.bodies;
+  std::vector<double> g(layout_.size(), 0.0);
+  addSForces(t, y, g.data());
+  q.resize(6 * nb);
+  for (int b = 0; b < nb; ++b) {
+    const int o = layout_.body(b);
+    const Eigen::Vector3d w(y[o + StateLayout::kW], y[o + StateLayout::kW + 1],
+                            y[o + StateLayout::kW + 2]);
+    const Eigen::Vector3d gyro = w.cross(inertia_[b] * w);
+    for (int c = 0; c < 3; ++c) {
+      q(6 * b + c) = -g[o + StateLayout::kV + c] + mass_[b] * model_->gravity(c);
+      q(6 * b + 3 + c) = -g[o + StateLayout::kW + c] - gyro(c);
+    }
+  }
+}
+
+void MultibodySystem::massMatrix(Eigen::MatrixXd& m) const {
+  const int nb = layout_.bodies;
+  m = Eigen::MatrixXd::Zero(6 * nb, 6 * nb);
+  for (int b = 0; b < nb; ++b) {
+    m.block<3, 3>(6 * b, 6 * b) = mass_[b] * Eigen::Matrix3d::Identity();
+    m.block<3, 3>(6 * b + 3, 6 * b + 3) = inertia_[b];
+  }
+}
+
+void MultibodySystem::elementReaction(bool motion, int element, int marker, const double* y,
+                                      Eigen::Vector3d& force, Eigen::Vector3d& torque) const {
+  // Generalised constraint force on the marker's part, computed for the part's own frame even
+  // when it is ground (its pose is fixed, but the virtual displacement is well defined).
+  force.setZero();
+  torque.setZero();
+  const model::Marker& mk = model_->markers[marker];
+  const int body = model_->parts[mk.part].body;
+  Eigen::Vector3d origin = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d a = Eigen::Matrix3d::Identity();
+  if (body >= 0) {
+    const BodyPose<double> pose = bodyPose(layout_, body, y);
+    origin = toEigen(pose.r);
+    a = toEigen(pose.a);
+  }
+  const auto& eqs = constraints_.equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
+    const ConstraintEquation& eq = eqs[k];
+    if (!eq.active || (motion ? eq.motion : eq.joint) != element) continue;
+    const double lambda = y[layout_.lambda(k)];
+    const int side = eq.iMarker == marker ? 0 : (eq.jMarker == marker ? 1 : -1);
+    if (side < 0) continue;
+    const int markers[2] = {eq.iMarker, eq.jMarker};
+    Frame<double> base[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
+    for (int dir = 0; dir < 6; ++dir) {
+      using S = Dual<double>;
+      Frame<S> f[2];
+      for (int s = 0; s < 2; ++s)
+        for (int c = 0; c < 3; ++c) {
+          f[s].p[c] = S(base[s].p[c], 0.0);
+          for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(base[s].a.c[r][c], 0.0);
+        }
+      // Virtual displacement of the part that carries `marker` (both markers of an equation
+      // are on different parts, so only one side moves).
+      if (dir < 3) {
+        f[side].p[dir].d = 1.0;
+      } else {
+        Eigen::Vector3d ek = Eigen::Vector3d::Zero();
+        ek(dir - 3) = 1.0;
+        const Eigen::Vector3d pg(base[side].p.x, base[side].p.y, base[side].p.z);
+        const Eigen::Vector3d sb = a.transpose() * (pg - origin);
+        const Eigen::Vector3d dp = a * ek.cross(sb);
+        for (int c = 0; c < 3; ++c) f[side].p[c].d = dp(c);
+        const Eigen::Matrix3d am = toEigen(base[side].a);
+        for (int r = 0; r < 3; ++r) {
+          const Eigen::Vector3d da = a * ek.cross(a.transpose() * am.col(r));
+          for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da(c);
+        }
+      }
+      (void)markers;
+      const double dphi = ConstraintSet::geometry(eq, f[0], f[1]).d;
+      // The constraint force on the part is -C^T lambda.
+      if (dir < 3) force(dir) -= dphi * lambda;
+      else torque(dir - 3) -= dphi * lambda;  // body axes, about the part origin
+    }
+  }
+  // Torque about the marker origin, in ground.
+  const Frame<double> fm = frame(marker, y);
+  const Eigen::Vector3d pm(fm.p.x, fm.p.y, fm.p.z);
+  torque = a * torque - (pm - origin).cross(force);
+}
+
+void MultibodySystem::sforceAction(int index, bool atJ, double t, const double* y,
+                                   Eigen::Vector3d& force, Eigen::Vector3d& torque) const {
+  const model::SForce& f = model_->sforces[index];
+  const double value = sforceValue(index, t, y);
+  const Frame<double> fi = frame(f.iMarker, y);
+  const Frame<double> fj = frame(f.jMarker, y);
+  Eigen::Vector3d onI;
+  const Eigen::Vector3d zj = toEigen(fj.a.c[2]);
+  const Eigen::Vector3d d = toEigen(fi.p - fj.p);
+  force.setZero();
+  torque.setZero();
+  if (f.rotation) {
+    onI = zj * value;
+    if (atJ) { if (!f.actionOnly) torque = -onI; }
+    else torque = onI;
+    return;
+  }
+  onI = f.actionOnly ? Eigen::Vector3d(zj * value) : Eigen::Vector3d(d * (value / d.norm()));
+  if (atJ) { if (!f.actionOnly) force = -onI; }
+  else force = onI;
+}
+
+}  // namespace openmss::mechanics

@@ -1,0 +1,277 @@
+#pragma once
+// The equations of motion of a Model over the state layout of state_layout.hpp
+// (docs/theory.md): kinematic equations, Newton-Euler equations with constraint forces
+// -C^T lambda, Euler-parameter normalisation, and the constraint equations (index 3).
+// Everything is templated on the scalar; exact Jacobians come from forward-mode AD.
+
+#include <cmath>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "common/dual.hpp"
+#include "mechanics/constraint_set.hpp"
+#include "mechanics/measures.hpp"
+#include "mechanics/state_layout.hpp"
+#include "model/model.hpp"
+
+namespace openmss::mechanics {
+
+// Expression value on the scalar T: the chain rule through the host measures for duals.
+template <class T>
+T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
+                std::vector<double>& scratchValues, std::vector<double>& scratchGrad);
+
+class MultibodySystem {
+ public:
+  explicit MultibodySystem(const model::Model& model);
+
+  const model::Model& model() const { return *model_; }
+  const StateLayout& layout() const { return layout_; }
+  const ConstraintSet& constraints() const { return constraints_; }
+  ConstraintSet& constraints() { return constraints_; }
+
+  // The state at the data set's configuration with the given initial velocities (unset = 0).
+  Eigen::VectorXd initialState() const;
+
+  // G(t, y, y') of the DAE. g has layout().size() entries.
+  template <class T>
+  void residual(double t, const T* y, const T* yp, T* g) const;
+
+  // Newton matrix dG/dy + cj dG/dy', exact (forward-mode AD, one column per pass).
+  void newtonMatrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
+                    Eigen::MatrixXd& jac) const;
+
+  // Constraint k's value Phi_k(q, t) (motions wrapped to +-pi for rotations).
+  double constraintValue(int k, double t, const double* y) const;
+  // Row k of C = dPhi/d(delta r, delta pi) over the moving bodies (6 columns per body).
+  void constraintRow(int k, const double* y, double* row) const;
+  // dPhi_k/dt at velocity u (= C u) and second derivative along u with zero acceleration.
+  void constraintRates(int k, const double* y, double* first, double* second) const;
+  // Motion function value and time derivatives (equation k must be a motion equation).
+  expr::TimeJet motionJet(int k, double t) const;
+
+  // Generalised applied force (6 per body: force in ground, torque in body axes about the CM)
+  // including gravity and the gyroscopic term -w x Jw, and the mass matrix diagonal blocks.
+  void appliedForces(double t, const double* y, Eigen::VectorXd& q) const;
+  void massMatrix(Eigen::MatrixXd& m) const;
+
+  // Force on the part of `marker` and torque about the marker's origin, both in ground,
+  // exerted by the equations of element (joint or motion), from the multipliers in y.
+  void elementReaction(bool motion, int element, int marker, const double* y,
+                       Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
+  // Force and torque of SFORCE `index` on the part of `marker` (its I or J marker), in ground,
+  // torque about the marker's origin.
+  void sforceAction(int index, bool atJ, double t, const double* y, Eigen::Vector3d& force,
+                    Eigen::Vector3d& torque) const;
+
+ private:
+  template <class T>
+  Frame<T> frame(int marker, const T* y) const;
+  template <class T>
+  void addConstraintForce(const ConstraintEquation& eq, const T* y, const T& lambda,
+                          T* g) const;
+  template <class T>
+  void addSForces(double t, const T* y, T* g) const;
+  template <class T>
+  T sforceValue(int index, double t, const T* y) const;
+  static double wrapDelta(double geometryValue, double target);
+
+  const model::Model* model_;
+  StateLayout layout_;
+  ConstraintSet constraints_;
+  std::vector<double> mass_;               // per body, divided by UCF
+  std::vector<Eigen::Matrix3d> inertia_;   // per body, divided by UCF
+  mutable std::vector<double> scratchValues_, scratchGrad_;
+};
+
+// ---- implementation of the templates ----
+
+template <class T>
+T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
+                std::vector<double>& values, std::vector<double>& grad) {
+  const size_t n = b.measures.size();
+  values.resize(n);
+  grad.resize(n);
+  if constexpr (std::is_same_v<T, double>) {
+    return b.expression.evaluate(hostValues, t);
+  } else {
+    for (size_t k = 0; k < n; ++k) values[k] = valueOf(hostValues[k]);
+    double dTime = 0.0;
+    const double v = b.expression.evaluate(values.data(), t, grad.data(), &dTime);
+    T out(v);
+    out.d = 0.0 * hostValues[0].d;  // zero of the right type
+    for (size_t k = 0; k < n; ++k) out.d = out.d + grad[k] * hostValues[k].d;
+    return out;
+  }
+}
+
+template <class T>
+Frame<T> MultibodySystem::frame(int marker, const T* y) const {
+  MarkerState<T> s = markerState(*model_, layout_, marker, y);
+  return {s.p, s.a};
+}
+
+template <class T>
+void MultibodySystem::addConstraintForce(const ConstraintEquation& eq, const T* y,
+                                         const T& lambda, T* g) const {
+  using S = Dual<T>;
+  const model::Marker* mk[2] = {&model_->markers[eq.iMarker], &model_->markers[eq.jMarker]};
+  Frame<T> base[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
+  for (int side = 0; side < 2; ++side) {
+    const int body = model_->parts[mk[side]->part].body;
+    if (body < 0) continue;
+    BodyPose<T> pose = bodyPose(layout_, body, y);
+    const V3<T> sb = V3<T>::from(mk[side]->position);
+    const M3<T> ab = M3<T>::from(mk[side]->orientation);
+    for (int dir = 0; dir < 6; ++dir) {
+      Frame<S> f[2];
+      for (int s = 0; s < 2; ++s) {
+        for (int c = 0; c < 3; ++c) {
+          f[s].p[c] = S(base[s].p[c], T(0.0));
+          for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(base[s].a.c[r][c], T(0.0));
+        }
+      }
+      // Seed the virtual displacement of this body: delta r (ground) or delta pi (body axes).
+      if (dir < 3) {
+        f[side].p[dir].d = T(1.0);
+      } else {
+        V3<T> ek(T(0.0), T(0.0), T(0.0));
+        ek[dir - 3] = T(1.0);
+        const V3<T> dp = pose.a * cross(ek, sb);
+        for (int c = 0; c < 3; ++c) f[side].p[c].d = dp[c];
+        for (int r = 0; r < 3; ++r) {
+          const V3<T> da = pose.a * cross(ek, ab.c[r]);
+          for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da[c];
+        }
+      }
+      const S val = ConstraintSet::geometry(eq, f[0], f[1]);
+      const int row = layout_.body(body) + (dir < 3 ? StateLayout::kV + dir : StateLayout::kW + dir - 3);
+      g[row] = g[row] + val.d * lambda;
+    }
+  }
+}
+
+template <class T>
+T MultibodySystem::sforceValue(int index, double t, const T* y) const {
+  const model::SForce& f = model_->sforces[index];
+  const size_t n = f.function.measures.size();
+  T host[16];
+  std::vector<T> big;
+  T* hv = host;
+  if (n > 16) {
+    big.resize(n);
+    hv = big.data();
+  }
+  for (size_t k = 0; k < n; ++k) kinematicMeasure(*model_, layout_, f.function.measures[k], y, &hv[k]);
+  if (n == 0) {
+    T zero(0.0);
+    return evaluateBound(f.function, &zero, t, scratchValues_, scratchGrad_);
+  }
+  return evaluateBound(f.function, hv, t, scratchValues_, scratchGrad_);
+}
+
+template <class T>
+void MultibodySystem::addSForces(double t, const T* y, T* g) const {
+  for (int k = 0; k < static_cast<int>(model_->sforces.size()); ++k) {
+    const model::SForce& f = model_->sforces[k];
+    const T value = sforceValue(k, t, y);
+    const Frame<T> fi = frame(f.iMarker, y);
+    const Frame<T> fj = frame(f.jMarker, y);
+    V3<T> onI, onJ;  // force (translation) or torque (rotation) in ground on I and J
+    if (f.rotation) {
+      onI = fj.a.c[2] * value;
+    } else if (f.actionOnly) {
+      onI = fj.a.c[2] * value;
+    } else {
+      const V3<T> d = fi.p - fj.p;
+      onI = d * (value / norm(d));  // positive values push I and J apart
+    }
+    onJ = -onI;
+    for (int side = 0; side < (f.actionOnly ? 1 : 2); ++side) {
+      const int marker = side == 0 ? f.iMarker : f.jMarker;
+      const int body = model_->parts[model_->markers[marker].part].body;
+      if (body < 0) continue;
+      const V3<T>& vec = side == 0 ? onI : onJ;
+      const BodyPose<T> pose = bodyPose(layout_, body, y);
+      T* gv = g + layout_.body(body) + StateLayout::kV;
+      T* gw = g + layout_.body(body) + StateLayout::kW;
+      if (f.rotation) {
+        const V3<T> nb = pose.a.tmul(vec);
+        for (int c = 0; c < 3; ++c) gw[c] = gw[c] - nb[c];
+      } else {
+        const Frame<T>& at = side == 0 ? fi : fj;
+        const V3<T> nb = pose.a.tmul(cross(at.p - pose.r, vec));
+        for (int c = 0; c < 3; ++c) {
+          gv[c] = gv[c] - vec[c];
+          gw[c] = gw[c] - nb[c];
+        }
+      }
+    }
+  }
+}
+
+template <class T>
+void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
+  const int nb = layout_.bodies;
+  const Eigen::Vector3d& grav = model_->gravity;
+  for (int b = 0; b < nb; ++b) {
+    const int o = layout_.body(b);
+    const T* q = y + o;
+    const T* qp = yp + o;
+    T* r = g + o;
+    for (int c = 0; c < 3; ++c) r[StateLayout::kR + c] = qp[StateLayout::kR + c] - q[StateLayout::kV + c];
+    const T& e0 = q[StateLayout::kE];
+    const T& e1 = q[StateLayout::kE + 1];
+    const T& e2 = q[StateLayout::kE + 2];
+    const T& e3 = q[StateLayout::kE + 3];
+    const T& w1 = q[StateLayout::kW];
+    const T& w2 = q[StateLayout::kW + 1];
+    const T& w3 = q[StateLayout::kW + 2];
+    const T& mu = q[StateLayout::kMu];
+    // e' = 1/2 e (x) (0, w_body) + mu e; mu is zero on the exact solution and absorbs the
+    // normalisation equation |e|^2 = 1 (index-2 pair, no drift of |e|).
+    r[StateLayout::kE + 0] = qp[StateLayout::kE + 0] - 0.5 * (-e1 * w1 - e2 * w2 - e3 * w3) - mu * e0;
+    r[StateLayout::kE + 1] = qp[StateLayout::kE + 1] - 0.5 * (e0 * w1 + e2 * w3 - e3 * w2) - mu * e1;
+    r[StateLayout::kE + 2] = qp[StateLayout::kE + 2] - 0.5 * (e0 * w2 + e3 * w1 - e1 * w3) - mu * e2;
+    r[StateLayout::kE + 3] = qp[StateLayout::kE + 3] - 0.5 * (e0 * w3 + e1 * w2 - e2 * w1) - mu * e3;
+    const double m = mass_[b];
+    for (int c = 0; c < 3; ++c)
+      r[StateLayout::kV + c] = m * qp[StateLayout::kV + c] - m * grav(c);
+    const Eigen::Matrix3d& jm = inertia_[b];
+    const V3<T> w{w1, w2, w3};
+    const V3<T> wdot{qp[StateLayout::kW], qp[StateLayout::kW + 1], qp[StateLayout::kW + 2]};
+    V3<T> jw, jwdot;
+    for (int rr = 0; rr < 3; ++rr) {
+      jw[rr] = jm(rr, 0) * w.x + jm(rr, 1) * w.y + jm(rr, 2) * w.z;
+      jwdot[rr] = jm(rr, 0) * wdot.x + jm(rr, 1) * wdot.y + jm(rr, 2) * wdot.z;
+    }
+    const V3<T> gyro = cross(w, jw);
+    for (int c = 0; c < 3; ++c) r[StateLayout::kW + c] = jwdot[c] + gyro[c];
+    r[StateLayout::kMu] = e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3 - 1.0;
+  }
+  addSForces(t, y, g);
+  const auto& eqs = constraints_.equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
+    const ConstraintEquation& eq = eqs[k];
+    const T& lambda = y[layout_.lambda(k)];
+    T& row = g[layout_.lambda(k)];
+    if (!eq.active) {
+      row = lambda;
+      continue;
+    }
+    addConstraintForce(eq, y, lambda, g);
+    const Frame<T> fi = frame(eq.iMarker, y);
+    const Frame<T> fj = frame(eq.jMarker, y);
+    T value = ConstraintSet::geometry(eq, fi, fj);
+    if (eq.motion >= 0) {
+      const double target = motionJet(k, t).value;
+      value = value - target;
+      if (eq.kind == ConstraintEquation::Kind::MotionRotation)
+        value = value - wrapDelta(valueOf(value) + target, target);
+    }
+    row = value;
+  }
+}
+
+}  // namespace openmss::mechanics

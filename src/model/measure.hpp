@@ -1,0 +1,50 @@
+#pragma once
+// A resolved host call of a function expression: which model quantity it reads. The model
+// builder turns expr::HostCall (names and ids) into Measures (kinds and indices); the mechanics
+// evaluates them.
+
+namespace openmss::model {
+
+enum class MeasureKind {
+  Time,
+  // Marker displacement measures (i relative to j, components in k axes).
+  DX, DY, DZ, DM,
+  // Velocity (time derivative in ground), components in k axes; VR the separation rate.
+  VX, VY, VZ, VM, VR,
+  // Angular velocity of i relative to j, components in k axes.
+  WX, WY, WZ, WM,
+  // Accelerations.
+  ACCX, ACCY, ACCZ, ACCM, WDTX, WDTY, WDTZ, WDTM,
+  // Angles of i relative to j.
+  AX, AY, AZ, PSI, THETA, PHI, YAW, PITCH, ROLL,
+  Orient,      // ORIENT(system, component, i, j): code in `code`, component in `component`
+  JointForce,  // JOINT(id, jflag, comp, rm)
+  MotionForce, // MOTION(id, jflag, comp, rm)
+  SForceForce, // SFORCE(id, jflag, comp, rm)
+};
+
+struct Measure {
+  MeasureKind kind = MeasureKind::Time;
+  int i = -1;  // marker index
+  int j = -1;  // marker index, -1 = ground origin/axes
+  int k = -1;  // resolution marker, -1 = ground axes
+  int element = -1;   // joint/motion/sforce index for force measures
+  int atJ = 0;        // force measures: 0 = at I marker, 1 = at J marker
+  int component = 0;  // force measures: 1..8; ORIENT: 1..4
+  int code = 0;       // ORIENT system code
+  // True when the value depends on accelerations or constraint forces: such measures may be
+  // read by requests but not (yet) by force or motion functions.
+  bool needsDynamics() const {
+    switch (kind) {
+      case MeasureKind::ACCX: case MeasureKind::ACCY: case MeasureKind::ACCZ:
+      case MeasureKind::ACCM: case MeasureKind::WDTX: case MeasureKind::WDTY:
+      case MeasureKind::WDTZ: case MeasureKind::WDTM: case MeasureKind::JointForce:
+      case MeasureKind::MotionForce: case MeasureKind::SForceForce:
+        return true;
+      default:
+        return false;
+    }
+  }
+};
+
+}  // namespace openmss::model

@@ -1,0 +1,21 @@
+#pragma once
+// Dataset -> Model: resolves references, checks the model as a whole (seed section 6.4.2) and
+// reports every problem in one pass with file:line, statement and id, and what to change.
+
+#include "common/diagnostics.hpp"
+#include "language/dataset.hpp"
+#include "model/model.hpp"
+
+namespace openmss::model {
+
+// Returns true when the model is usable (no errors). Warnings and notes may be added either way.
+bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& diags);
+
+// Binds the host calls of a parsed expression to model measures. Adds diagnostics for unknown
+// ids or functions the solver does not evaluate yet. `forForces` rejects measures that need
+// accelerations or reaction forces (they are allowed in requests only).
+bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
+                    const std::string& subject, bool forForces, Diagnostics& diags,
+                    BoundExpression& out);
+
+}  // namespace openmss::model

@@ -1,0 +1,294 @@
+#include "solvers/bdf_integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace openmss::solvers {
+namespace {
+
+// Corrector convergence: remaining change relative to the weighted error tolerance.
+constexpr double kTightChange = 1e-9;
+
+// Weights of the value (w) and derivative (dw) at x of the polynomial through (nodes, values):
+// p(x) = sum w_j y_j, p'(x) = sum dw_j y_j. x must differ from every node.
+void lagrangeAt(const double* nodes, int n, double x, double* w, double* dw) {
+  for (int j = 0; j < n; ++j) {
+    double num = 1.0, den = 1.0, s = 0.0;
+    for (int m = 0; m < n; ++m) {
+      if (m == j) continue;
+      num *= x - nodes[m];
+      den *= nodes[j] - nodes[m];
+      s += 1.0 / (x - nodes[m]);
+    }
+    w[j] = num / den;
+    dw[j] = w[j] * s;
+  }
+}
+
+// BDF weights: derivative at nodes[0] of the polynomial through all n nodes.
+void bdfWeights(const double* nodes, int n, double* a) {
+  a[0] = 0.0;
+  for (int m = 1; m < n; ++m) a[0] += 1.0 / (nodes[0] - nodes[m]);
+  for (int j = 1; j < n; ++j) {
+    double num = 1.0, den = 1.0;
+    for (int m = 0; m < n; ++m) {
+      if (m == j) continue;
+      if (m != 0) num *= nodes[0] - nodes[m];
+      den *= nodes[j] - nodes[m];
+    }
+    a[j] = num / den;
+  }
+}
+
+}  // namespace
+
+BdfIntegrator::BdfIntegrator(DaeProblem& problem, const BdfSettings& settings)
+    : problem_(problem), settings_(settings) {
+  settings_.kmax = std::clamp(settings_.kmax, 1, 6);
+}
+
+void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+  const int n = problem_.size();
+  t_ = t0;
+  y_ = y0;
+  yp_ = yp0;
+  ts_.assign(1, t0);
+  ys_.assign(1, y0);
+  k_ = 1;
+  stepsAtOrder_ = 0;
+  h_ = settings_.hinit > 0 ? settings_.hinit : 1e-3;
+  h_ = std::min(h_, settings_.hmax);
+  for (auto* v : {&yNew_, &ypNew_, &yPred_, &base_, &g_, &dy_, &predictorDiff_}) v->resize(n);
+  rowScale_ = Eigen::VectorXd::Ones(n);
+  colScale_ = Eigen::VectorXd::Ones(n);
+  jacobianCurrent_ = false;
+  haveJacobian_ = false;
+}
+
+double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& ref,
+                                   bool errorOnly) const {
+  // Root-mean-square with weights 1 / (ERROR (1 + |y|)): relative for large values, absolute
+  // for small ones.
+  double sum = 0.0;
+  int count = 0;
+  for (int i = 0; i < v.size(); ++i) {
+    if (errorOnly ? !problem_.errorControlled(i) : !problem_.differential(i)) continue;
+    const double w = settings_.error * (1.0 + std::abs(ref(i)));
+    sum += (v(i) / w) * (v(i) / w);
+    ++count;
+  }
+  return count ? std::sqrt(sum / count) : 0.0;
+}
+
+void BdfIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy) {
+  lastWorstEq_ = -1;
+  lastWorstVar_ = -1;
+  lastWorstRes_ = 0.0;
+  lastWorstChange_ = 0.0;
+  for (int i = 0; i < g.size(); ++i) {
+    if (std::abs(g(i)) > lastWorstRes_) { lastWorstRes_ = std::abs(g(i)); lastWorstEq_ = i; }
+    if (problem_.differential(i) && std::abs(dy(i)) > lastWorstChange_) {
+      lastWorstChange_ = std::abs(dy(i));
+      lastWorstVar_ = i;
+    }
+  }
+}
+
+bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* errorNorm) {
+  *newtonFailed = false;
+  const double tNew = t_ + h;
+  const int nh = static_cast<int>(ts_.size());
+  double nodes[8], w[8], dw[8], a[8];
+
+  // Predictor: polynomial through the last k+1 solutions, or a Taylor step at start-up.
+  double errorRatio;  // local error / (corrector - predictor), exact for variable steps
+  if (nh >= k + 1) {
+    for (int j = 0; j <= k; ++j) nodes[j] = ts_[j];
+    lagrangeAt(nodes, k + 1, tNew, w, dw);
+    yPred_.setZero();
+    for (int j = 0; j <= k; ++j) yPred_ += w[j] * ys_[j];
+  } else {
+    yPred_ = y_ + h * yp_;
+  }
+  // Corrector: BDF of order k through tNew and the last k solutions.
+  nodes[0] = tNew;
+  for (int j = 1; j <= k; ++j) nodes[j] = ts_[j - 1];
+  bdfWeights(nodes, k + 1, a);
+  const double cj = a[0];
+  base_.setZero();
+  for (int j = 1; j <= k; ++j) base_ += a[j] * ys_[j - 1];
+  if (nh >= k + 1) {
+    double num = 1.0, den = cj;
+    for (int j = 1; j <= k; ++j) num *= tNew - nodes[j];
+    for (int j = 0; j <= k; ++j) den *= tNew - ts_[j];
+    errorRatio = std::abs(num / den);
+  } else {
+    errorRatio = 1.0;  // Taylor predictor vs backward Euler: equal and opposite h^2/2 y''
+  }
+
+  // Modified Newton. A Jacobian is kept while cj stays within 20 % of the one it was formed
+  // with and the iteration contracts well.
+  auto refresh = [&]() {
+    problem_.newtonMatrix(tNew, yPred_, cj * yPred_ + base_, cj, jac_);
+    ++stats_.jacobianEvaluations;
+    for (int i = 0; i < jac_.rows(); ++i) {
+      rowScale_(i) = std::pow(cj, problem_.rowScaleExponent(i));
+      colScale_(i) = std::pow(cj, problem_.unknownScaleExponent(i));
+    }
+    jac_ = rowScale_.asDiagonal() * jac_ * colScale_.asDiagonal();
+    lu_.compute(jac_);
+    cjJacobian_ = cj;
+    haveJacobian_ = true;
+    jacobianCurrent_ = true;
+  };
+  if (!haveJacobian_ || std::abs(cj / cjJacobian_ - 1.0) > 0.2) refresh();
+
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    yNew_ = yPred_;
+    double previous = 0.0, rate = 0.0;
+    bool converged = false;
+    for (int it = 0; it < settings_.maxit; ++it) {
+      ypNew_ = cj * yNew_ + base_;
+      problem_.residual(tNew, yNew_, ypNew_, g_);
+      ++stats_.residualEvaluations;
+      dy_ = colScale_.cwiseProduct(lu_.solve(rowScale_.cwiseProduct(g_)));
+      // A Jacobian formed at another cj approximates cj dG/dy': rescale the step (DASSL).
+      if (cjJacobian_ != cj) dy_ *= 2.0 / (1.0 + cj / cjJacobian_);
+      yNew_ -= dy_;
+      const double size = weightedNorm(dy_, yNew_, false);
+      noteWorst(g_, dy_);
+      if (observer_)
+        observer_({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
+                   lastWorstChange_},
+                  observerUser_);
+      if (it > 0) rate = size / std::max(previous, 1e-300);
+      previous = size;
+      // Converged when the remaining change is far below the error tolerance. The corrector
+      // must be much tighter than ERROR because HMAX-limited runs take hundreds of thousands of
+      // steps and a corrector bias accumulates over all of them. When the iteration stops
+      // contracting at round-off level (far below the tolerance), that is convergence too.
+      if (size <= kTightChange ||
+          (it > 0 && rate < 0.9 && rate / (1.0 - rate) * size <= kTightChange)) {
+        converged = true;
+        break;
+      }
+      if (it > 0 && rate >= 0.9 && size <= 1e-3) {
+        converged = true;
+        break;
+      }
+      if (it > 1 && rate > 0.9) break;  // diverging
+    }
+    if (converged) break;
+    if (jacobianCurrent_ || attempt == 1) {
+      *newtonFailed = true;
+      return false;
+    }
+    refresh();
+  }
+  ypNew_ = cj * yNew_ + base_;
+  predictorDiff_ = yNew_ - yPred_;
+  *errorNorm = errorRatio * weightedNorm(predictorDiff_, yNew_, true);
+  return *errorNorm <= 1.0;
+}
+
+double BdfIntegrator::orderErrorEstimate(int q, double h) const {
+  // Local error of order q at step h from the (q+1)-th divided difference of the last q+2
+  // solutions: LTE ~ q! h^(q+1) |y[q+1 points...]|. Needs q+2 history points.
+  const int need = q + 2;
+  if (static_cast<int>(ts_.size()) < need) return -1.0;
+  std::vector<Eigen::VectorXd> dd(ys_.begin(), ys_.begin() + need);
+  for (int level = 1; level < need; ++level)
+    for (int j = 0; j < need - level; ++j)
+      dd[j] = (dd[j] - dd[j + 1]) / (ts_[j] - ts_[j + level]);
+  double fact = 1.0;
+  for (int m = 2; m <= q; ++m) fact *= m;
+  return fact * std::pow(h, q + 1) * weightedNorm(dd[0], ys_[0], true);
+}
+
+bool BdfIntegrator::advanceTo(double tout) {
+  const double eps = 1e-12 * std::max(1.0, std::abs(tout));
+  const double hmin = settings_.hmin > 0 ? settings_.hmin
+                                         : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
+  while (t_ < tout - eps) {
+    double h = std::min(h_, settings_.hmax);
+    // Land exactly on the output time; avoid leaving a sliver for the next step.
+    if (t_ + h >= tout - eps) h = tout - t_;
+    else if (t_ + 2.0 * h > tout) h = 0.5 * (tout - t_);
+    bool newtonFailed = false;
+    double err = 0.0;
+    if (!attemptStep(h, k_, &newtonFailed, &err)) {
+      if (newtonFailed) {
+        ++stats_.newtonFailures;
+        h_ = 0.25 * h;
+        jacobianCurrent_ = false;
+      } else {
+        ++stats_.rejectedSteps;
+        h_ = h * std::clamp(0.9 * std::pow(1.0 / err, 1.0 / (k_ + 1)), 0.2, 0.9);
+        if (k_ > 1 && stats_.rejectedSteps > 0) k_ = std::max(1, k_ - 1);
+      }
+      if (h_ < hmin) {
+        failure_.time = t_;
+        failure_.stepSize = h_;
+        failure_.reason = newtonFailed ? "the corrector did not converge"
+                                       : "the local error stays above the tolerance";
+        failure_.worstEquation = lastWorstEq_;
+        failure_.worstResidual = lastWorstRes_;
+        failure_.worstVariable = lastWorstVar_;
+        failure_.worstChange = lastWorstChange_;
+        return false;
+      }
+      continue;
+    }
+    // Accept.
+    t_ += h;
+    if (std::abs(t_ - tout) <= eps) t_ = tout;
+    y_ = yNew_;
+    yp_ = ypNew_;
+    ts_.push_front(t_);
+    ys_.push_front(y_);
+    while (static_cast<int>(ts_.size()) > settings_.kmax + 3) {
+      ts_.pop_back();
+      ys_.pop_back();
+    }
+    ++stats_.steps;
+    ++stepsAtOrder_;
+    jacobianCurrent_ = false;
+
+    // Next order and step: compare the error estimates of orders k-1, k, k+1.
+    double ratio = 0.9 * std::pow(1.0 / std::max(err, 1e-10), 1.0 / (k_ + 1));
+    int nextK = k_;
+    if (stepsAtOrder_ > k_ + 1) {
+      const double eLow = k_ > 1 ? orderErrorEstimate(k_ - 1, h) : -1.0;
+      const double eHigh = k_ < settings_.kmax ? orderErrorEstimate(k_ + 1, h) : -1.0;
+      const double rLow = eLow > 0 ? 0.9 * std::pow(1.0 / eLow, 1.0 / k_) : 0.0;
+      const double rHigh = eHigh > 0 ? 0.9 * std::pow(1.0 / eHigh, 1.0 / (k_ + 2)) : 0.0;
+      const double capped = settings_.hmax / h;  // ratios above this cannot lengthen the step
+      if (ratio >= capped && (rLow >= capped || rLow == 0.0) && (rHigh >= capped || rHigh == 0.0)) {
+        // The step is held at HMAX whatever the order: take the order with the smallest error.
+        double eNow = std::max(err, 1e-300);
+        if (eHigh > 0 && eHigh < eNow) { nextK = k_ + 1; ratio = rHigh; }
+        else if (eLow > 0 && eLow < 0.5 * eNow) { nextK = k_ - 1; ratio = rLow; }
+      } else if (rLow > ratio && rLow >= rHigh) {
+        nextK = k_ - 1;
+        ratio = rLow;
+      } else if (rHigh > 1.1 * ratio) {
+        nextK = k_ + 1;
+        ratio = rHigh;
+      }
+    } else if (static_cast<int>(ts_.size()) >= 2 && k_ == 1 && stepsAtOrder_ >= 2 &&
+               settings_.kmax > 1) {
+      // Leave the start-up order as soon as history allows.
+      nextK = 2;
+    }
+    if (nextK != k_) { k_ = nextK; stepsAtOrder_ = 0; }
+    if (ratio >= 1.5) h_ = h * std::min(ratio, 2.0);
+    else if (ratio < 1.0) h_ = h * std::max(ratio, 0.5);
+    else h_ = std::max(h, h_);
+    h_ = std::min(h_, settings_.hmax);
+    stats_.order = k_;
+    stats_.stepSize = h;
+  }
+  return true;
+}
+
+}  // namespace openmss::solvers
