@@ -74,7 +74,7 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   Diagnostics readDiags;
   language::readDatasetFile(path, dataset, readDiags);
   model_ = std::make_unique<model::Model>();
-  if (!readDiags.hasErrors()) model::buildModel(dataset, *model_, readDiags);
+  model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
   for (const auto& d : readDiags.all()) {
     diags_.add(d);
     report(d);
@@ -225,8 +225,18 @@ bool Session::writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::V
   if (!req_.isOpen()) {
     output::RequestFileHeader h;
     h.title = m.title;
-    h.unitsToken = m.units.token;
-    h.lengthScale = m.units.lengthScale;
+    if (auto u = output::requestFileUnits(m.units.length, m.units.mass, m.units.time,
+                                          m.units.force)) {
+      h.unitsToken = u->token;
+      h.lengthScale = u->lengthScale;
+    } else {
+      diags_.warning({m.file, 0, 0}, "UNITS",
+                     "the request-file units tag of " + m.units.description +
+                         " is not known; the .req header says " + h.unitsToken +
+                         " although the values are in the model's units",
+                     "Post-processors must be told the units of this run.");
+      report(diags_.all().back());
+    }
     std::vector<output::RequestEntry> entries;
     for (const auto& r : m.requests) {
       output::RequestEntry e;

@@ -182,7 +182,8 @@ int check(const std::string& path) {
   language::readDatasetFile(path, ds, diags);
   model::Model m;
   bool built = false;
-  if (!diags.hasErrors()) built = model::buildModel(ds, m, diags);
+  // Build even after reading errors, so that one pass reports the model-level errors too.
+  built = model::buildModel(ds, m, diags);
   printDiagnostics(diags);
   if (!built || diags.hasErrors()) {
     std::printf("%s: %d error(s), %d warning(s)\n", path.c_str(), diags.errorCount(),

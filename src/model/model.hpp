@@ -19,8 +19,8 @@ namespace openmss::model {
 
 struct Units {
   double ucf = 1.0;                     // Force * UCF = Mass * Acceleration
-  std::string token = "M_KGS_N_RACA";   // request-file units tag
-  double lengthScale = 1.0;             // length units per metre (request-file header)
+  // Unit names as the UNITS statement gives them (canonical words).
+  std::string length = "METER", mass = "KILOGRAM", time = "SECOND", force = "NEWTON";
   std::string description = "m, kg, s, N";
 };
 

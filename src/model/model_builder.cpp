@@ -5,6 +5,7 @@
 #include <set>
 
 #include "common/rotation.hpp"
+#include "language/schema.hpp"
 #include "model/units_table.hpp"
 
 namespace openmss::model {
@@ -67,6 +68,10 @@ class Args {
   }
 
   void require(const char* name, const char* what) const {
+    // The reader already reports arguments its schema marks as required.
+    if (const language::StatementSpec* spec = language::findStatementSpec(s_.name))
+      for (const auto& arg : spec->arguments)
+        if (arg.name == name && arg.required) return;
     if (!s_.has(name))
       d_.error(s_.where, s_.subject(), std::string("missing required argument ") + name,
                std::string("Add ") + name + "=" + what + ".");

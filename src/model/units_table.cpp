@@ -67,16 +67,24 @@ std::optional<double> lookup(const language::Statement& s, const char* arg,
 
 void applyUnits(const language::Statement& s, Units& units, Diagnostics& diags) {
   double f = 1.0, m = 1.0, l = 1.0, t = 1.0;
-  std::string lengthName = "METER";
   if (const language::Argument* sys = s.find("SYSTEM")) {
     const std::string w = sys->values.empty() ? "" : sys->values[0].text;
-    if (w == "MKS") {
-    } else if (w == "CGS") { f = 1e-5; m = 1e-3; l = 1e-2; lengthName = "CENTIMETER"; }
-    else if (w == "FPS") { f = 4.4482216152605; m = 0.45359237; l = 0.3048; lengthName = "FOOT"; }
-    else if (w == "IPS") { f = 4.4482216152605; m = 0.45359237; l = 0.0254; lengthName = "INCH"; }
+    auto set = [&](const char* len, const char* mass, const char* force) {
+      units.length = len;
+      units.mass = mass;
+      units.force = force;
+      units.time = "SECOND";
+      f = forceUnits().at(force);
+      m = massUnits().at(mass);
+      l = lengthUnits().at(len);
+    };
+    if (w == "MKS") set("METER", "KILOGRAM", "NEWTON");
+    else if (w == "CGS") set("CENTIMETER", "GRAM", "DYNE");
+    else if (w == "FPS") set("FOOT", "POUND_MASS", "POUND_FORCE");
+    else if (w == "IPS") set("INCH", "POUND_MASS", "POUND_FORCE");
     else if (w == "NONE") {
       units.ucf = 1.0;
-      units.description = "consistent units (SYSTEM=NONE)";
+      units.description = "consistent units (SYSTEM=NONE), UCF = 1";
       return;
     } else {
       diags.error(sys->where, s.subject(), "SYSTEM=" + w + " is not a unit system",
@@ -90,23 +98,24 @@ void applyUnits(const language::Statement& s, Units& units, Diagnostics& diags) 
     if (given > 0 && given < 4)
       diags.error(s.where, s.subject(), "FORCE, MASS, LENGTH and TIME must be given together",
                   "Give all four, or SYSTEM=, or UCF=.");
-    f = lookup(s, "FORCE", forceUnits(), diags).value_or(1.0);
-    m = lookup(s, "MASS", massUnits(), diags).value_or(1.0);
-    l = lookup(s, "LENGTH", lengthUnits(), diags).value_or(1.0);
-    t = lookup(s, "TIME", timeUnits(), diags).value_or(1.0);
-    if (const language::Argument* a = s.find("LENGTH"); a && !a->values.empty())
-      lengthName = a->values[0].text;
+    auto pick = [&](const char* arg, const std::map<std::string, double>& table,
+                    std::string& name, double& factor) {
+      if (auto v = lookup(s, arg, table, diags)) {
+        factor = *v;
+        for (const auto& [n, value] : table)
+          if (value == *v) name = n;
+      }
+    };
+    pick("FORCE", forceUnits(), units.force, f);
+    pick("MASS", massUnits(), units.mass, m);
+    pick("LENGTH", lengthUnits(), units.length, l);
+    pick("TIME", timeUnits(), units.time, t);
   }
   // F[f] * f  = m[m] * m * a[l/t^2] * l / t^2   =>   F * UCF = m * a with UCF = f t^2 / (m l)
   units.ucf = f * t * t / (m * l);
   if (const language::Argument* u = s.find("UCF"); u && !u->values.empty())
     units.ucf = u->values[0].number;
-  units.lengthScale = 1.0 / l;
-  if (l == 1.0) units.token = "M_KGS_N_RACA";
-  else if (l == 1e-3) units.token = "MMKGS_N_RACA";
-  else if (l == 1e-2) units.token = "CMKGS_N_RACA";
-  else units.token = "USER_UNITS";  // documented in docs/output-files.md
-  units.description = lengthName;
+  units.description = units.length + ", " + units.mass + ", " + units.time + ", " + units.force;
 }
 
 }  // namespace openmss::model

@@ -67,17 +67,15 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
 
 double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& ref,
                                    bool errorOnly) const {
-  // Root-mean-square with weights 1 / (ERROR (1 + |y|)): relative for large values, absolute
-  // for small ones.
-  double sum = 0.0;
-  int count = 0;
+  // Largest |v_i| / (ERROR (1 + |y_i|)): relative for large values, absolute for small ones.
+  // The maximum (not a root-mean-square) so that one coordinate's error is not diluted by
+  // the many that are at rest.
+  double worst = 0.0;
   for (int i = 0; i < v.size(); ++i) {
     if (errorOnly ? !problem_.errorControlled(i) : !problem_.differential(i)) continue;
-    const double w = settings_.error * (1.0 + std::abs(ref(i)));
-    sum += (v(i) / w) * (v(i) / w);
-    ++count;
+    worst = std::max(worst, std::abs(v(i)) / (settings_.error * (1.0 + std::abs(ref(i)))));
   }
-  return count ? std::sqrt(sum / count) : 0.0;
+  return worst;
 }
 
 void BdfIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy) {

@@ -1,0 +1,210 @@
+// The command-line program as a user meets it: check (DOF, diagnostics), run (outputs,
+// determinism, failures), eval and --help.
+
+#include <gtest/gtest.h>
+#include <sys/wait.h>
+
+#include <chrono>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Result {
+  int status = -1;
+  std::string output;  // stdout and stderr
+};
+
+fs::path scratch(const std::string& name) {
+  const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
+  fs::path p = fs::temp_directory_path() / ("openmss-cli-" + name + "-" + std::to_string(ticks));
+  fs::create_directories(p);
+  return p;
+}
+
+Result run(const std::string& args, const fs::path& dir) {
+  const fs::path log = dir / "cli.log";
+  const std::string cmd = "cd '" + dir.string() + "' && '" OPENMSS_BINARY "' " + args + " > '" +
+                          log.string() + "' 2>&1";
+  const int raw = std::system(cmd.c_str());
+  Result r;
+  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(log);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  r.output = ss.str();
+  return r;
+}
+
+std::string slurp(const fs::path& p) {
+  std::ifstream in(p, std::ios::binary);
+  std::stringstream ss;
+  ss << in.rdbuf();
+  return ss.str();
+}
+
+void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+
+const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation/adams-joints";
+
+TEST(Check, PrintsTheDegreesOfFreedomOfEachValidationModel) {
+  if (!fs::exists(kJoints)) GTEST_SKIP() << "shared validation data absent: " << kJoints;
+  const std::pair<const char*, int> expected[] = {
+      {"Revolute_Case01", 1},  {"Revolute_Case02", 1},  {"Spherical_Case01", 3},
+      {"Spherical_Case02", 3}, {"Universal_Case01", 2}, {"Universal_Case02", 2},
+      {"Prismatic_Case01", 1}, {"Prismatic_Case02", 1}, {"Cylindrical_Case01", 2}};
+  const fs::path dir = scratch("dof");
+  for (const auto& [name, dof] : expected) {
+    const Result r =
+        run("check '" + (kJoints / name / ("test_" + std::string(name) + ".adm")).string() + "'",
+            dir);
+    EXPECT_EQ(r.status, 0) << r.output;
+    EXPECT_NE(r.output.find("DOF " + std::to_string(dof) + "\n"), std::string::npos)
+        << name << ":\n" << r.output;
+  }
+  fs::remove_all(dir);
+}
+
+TEST(Check, ReportsEveryErrorOfAMalformedModelWithItsLine) {
+  // Three kinds of mistakes the issue names: an unknown marker id, a missing required
+  // argument, a bad number; plus two more, all in one pass.
+  const fs::path dir = scratch("malformed");
+  write(dir / "bad.adm",
+        "malformed model\n"
+        "PART/1, GROUND\n"
+        "MARKER/10, PART=1\n"
+        "PART/2, MASS=1, CM=20, IP=1,1,1\n"
+        "MARKER/20, PART=2, QP=1,0,0\n"
+        "JOINT/1, REVOLUTE, I=20, J=99\n"         // line 6: marker 99 does not exist
+        "JOINT/2, SPHERICAL, I=20\n"              // line 7: J missing
+        "MARKER/21, PART=2, QP=1,0,0.5.3\n"       // line 8: not a number
+        "SFORCE/3, I=20, J=10, TRANSLATION, FUNCTION=NOSUCH(1)\n"  // line 9: unknown function
+        "PART/3, GROUND\n"                        // line 10: a second ground
+        "END\n");
+  const Result r = run("check bad.adm", dir);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("bad.adm:6"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("JOINT/1"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("99"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.adm:7"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("JOINT/2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.adm:8"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.adm:9"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("NOSUCH"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("bad.adm:10"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
+TEST(Check, NamesAStatementTheSolverDoesNotSupportYet) {
+  const fs::path dir = scratch("unsupported");
+  write(dir / "u.adm",
+        "unsupported\n"
+        "PART/1, GROUND\n"
+        "MARKER/10, PART=1\n"
+        "PART/2, MASS=1, CM=20, IP=1,1,1\n"
+        "MARKER/20, PART=2\n"
+        "SPRINGDAMPER/5, I=20, J=10, TRANSLATIONAL, K=10, C=1, LENGTH=1\n"
+        "END\n");
+  const Result r = run("check u.adm", dir);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("u.adm:6"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("SPRINGDAMPER/5: SPRINGDAMPER is not supported yet"), std::string::npos)
+      << r.output;
+  fs::remove_all(dir);
+}
+
+const char* kPendulum =
+    "pendulum for the command-line tests\n"
+    "PART/1, GROUND\n"
+    "MARKER/10, PART=1\n"
+    "PART/2, MASS=2, CM=20, IP=0.1,0.1,0.1\n"
+    "MARKER/20, PART=2, QP=1,0,0\n"
+    "MARKER/21, PART=2\n"
+    "JOINT/1, REVOLUTE, I=21, J=10\n"
+    "ACCGRAV/ JGRAV=-9.81\n"
+    "REQUEST/1, DISPLACEMENT, I=20, J=10\n"
+    "REQUEST/2, F2=JOINT(1,0,2,0)\\F3=JOINT(1,0,3,0)\n"
+    "OUTPUT/REQSAVE\n"
+    "END\n";
+
+TEST(Run, ADataSetWithDefaultsWritesRequestAndMessageFiles) {
+  const fs::path dir = scratch("adm");
+  write(dir / "pend.adm", kPendulum);
+  const Result r = run("run pend.adm --end 0.5 --steps 10 --quiet", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "pend.msg"));
+  const std::string req = slurp(dir / "pend.req");
+  // 11 output times (0 .. 0.5) of 2 requests: 3 header lines, 4 directory lines, 11 * 3.
+  EXPECT_EQ(std::count(req.begin(), req.end(), '\n'), 3 + 4 + 11 * 3) << req;
+  fs::remove_all(dir);
+}
+
+TEST(Run, TheSameInputGivesBitIdenticalOutputs) {
+  const fs::path a = scratch("det-a"), b = scratch("det-b");
+  write(a / "pend.adm", kPendulum);
+  write(b / "pend.adm", kPendulum);
+  ASSERT_EQ(run("run pend.adm --end 1 --dtout 0.01 --quiet", a).status, 0);
+  ASSERT_EQ(run("run pend.adm --end 1 --dtout 0.01 --quiet", b).status, 0);
+  EXPECT_EQ(slurp(a / "pend.req"), slurp(b / "pend.req"));
+  // The message files differ only in the path of the data set they echo.
+  std::string ma = slurp(a / "pend.msg"), mb = slurp(b / "pend.msg");
+  auto strip = [](std::string s, const fs::path& dir) {
+    for (size_t at; (at = s.find(dir.string())) != std::string::npos;)
+      s.erase(at, dir.string().size());
+    return s;
+  };
+  EXPECT_EQ(strip(ma, a), strip(mb, b));
+  fs::remove_all(a);
+  fs::remove_all(b);
+}
+
+TEST(Run, AnAcfResolvesItsModelBesideItAndWritesToOutdir) {
+  const fs::path dir = scratch("acf");
+  fs::create_directories(dir / "model");
+  write(dir / "model" / "pend.adm", kPendulum);
+  write(dir / "model" / "pend.acf",
+        "pend\nrun1\nintegrator/gstiff, error=1e-5\nsimulate/dynamics, end=0.2, steps=4\nstop\n");
+  const Result r = run("run model/pend.acf --outdir out --quiet", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_TRUE(fs::exists(dir / "out" / "run1.req"));
+  EXPECT_TRUE(fs::exists(dir / "out" / "run1.msg"));
+  fs::remove_all(dir);
+}
+
+TEST(Run, AnUnsupportedCommandStopsTheRunWithItsLine) {
+  const fs::path dir = scratch("badcmd");
+  write(dir / "pend.adm", kPendulum);
+  write(dir / "pend.acf", "pend\npend\nsimulate/statics\nstop\n");
+  const Result r = run("run pend.acf --quiet", dir);
+  EXPECT_NE(r.status, 0);
+  EXPECT_NE(r.output.find("pend.acf:3"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("STATICS is not supported yet"), std::string::npos) << r.output;
+  fs::remove_all(dir);
+}
+
+TEST(Eval, PrintsTheValueAndTheTimeDerivative) {
+  const fs::path dir = scratch("eval");
+  const Result r = run("eval 'STEP(TIME,0,0,1,1)' --time 0.5 --derivative", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  EXPECT_NE(r.output.find("0.5\n"), std::string::npos) << r.output;  // midpoint of the cubic
+  EXPECT_NE(r.output.find("d/dTIME 1.5"), std::string::npos) << r.output;  // 6 s (1-s) at 0.5
+  fs::remove_all(dir);
+}
+
+TEST(Help, EveryCommandHasIt) {
+  const fs::path dir = scratch("help");
+  for (const char* c : {"--help", "run --help", "check --help", "eval --help"}) {
+    const Result r = run(c, dir);
+    EXPECT_EQ(r.status, 0) << c;
+    EXPECT_NE(r.output.find("openmss"), std::string::npos) << c;
+  }
+  EXPECT_EQ(run("frobnicate", dir).status, 64);
+  fs::remove_all(dir);
+}
+
+}  // namespace
