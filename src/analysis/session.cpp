@@ -397,18 +397,35 @@ bool Session::simulate(const language::Statement& c) {
       const auto& st = bdf.statistics();
       if (!ok) {
         const auto& f = bdf.failure();
-        const std::string text =
+        std::string text =
             "the dynamic analysis failed at time " + fmt("%.6E", f.time) + " (step size " +
             fmt("%.3E", f.stepSize) + "): " + f.reason + ". The equation with the largest "
             "error is " + dae.equationName(f.worstEquation) + " (" +
             fmt("%.3E", f.worstResidual) + "); the variable changing most is " +
             dae.variableName(f.worstVariable) + " (" + fmt("%.3E", f.worstChange) + ")";
+        // Name the applied force that dominates at the last accepted state: a force that
+        // blows up is the usual cause (seed: "avoid IFs like the plague").
+        std::string forces;
+        double biggest = -1.0;
+        for (int k = 0; k < static_cast<int>(m.sforces.size()); ++k) {
+          Eigen::Vector3d fk, tk;
+          system_->sforceAction(k, false, bdf.t(), bdf.y().data(), fk, tk);
+          const double size = std::max(fk.norm(), tk.norm());
+          if (!std::isfinite(size) || size > biggest) {
+            biggest = size;
+            forces = "; the largest applied force at t = " + fmt("%.6E", bdf.t()) + " is SFORCE/" +
+                     std::to_string(m.sforces[k].id) + " (" + fmt("%.3E", size) + ")";
+            if (!std::isfinite(size)) break;
+          }
+        }
+        text += forces;
         diags_.error({m.file, 0, 0}, "", text,
                      "Outputs up to the last successful output step are in " + prefix_ +
                          ".req. Look for a discontinuous force or motion near that time, or "
                          "tighten HMAX.");
         report(diags_.all().back());
         t_ = bdf.t();
+        summary_.time = t_;
         return false;
       }
       t_ = t;

@@ -73,19 +73,28 @@ double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::Vector
   double worst = 0.0;
   for (int i = 0; i < v.size(); ++i) {
     if (errorOnly ? !problem_.errorControlled(i) : !problem_.differential(i)) continue;
-    worst = std::max(worst, std::abs(v(i)) / (settings_.error * (1.0 + std::abs(ref(i)))));
+    const double r = std::abs(v(i)) / (settings_.error * (1.0 + std::abs(ref(i))));
+    if (std::isnan(r)) return r;  // a NaN anywhere fails the test (std::max would hide it)
+    worst = std::max(worst, r);
   }
   return worst;
 }
 
 void BdfIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy) {
+  // A NaN or infinite entry is the worst of all (comparisons alone would skip it).
+  auto worse = [](double candidate, double current) {
+    return !std::isfinite(candidate) ? std::isfinite(current) : candidate > current;
+  };
   lastWorstEq_ = -1;
   lastWorstVar_ = -1;
   lastWorstRes_ = 0.0;
   lastWorstChange_ = 0.0;
   for (int i = 0; i < g.size(); ++i) {
-    if (std::abs(g(i)) > lastWorstRes_) { lastWorstRes_ = std::abs(g(i)); lastWorstEq_ = i; }
-    if (problem_.differential(i) && std::abs(dy(i)) > lastWorstChange_) {
+    if (worse(std::abs(g(i)), lastWorstRes_)) {
+      lastWorstRes_ = std::abs(g(i));
+      lastWorstEq_ = i;
+    }
+    if (problem_.differential(i) && worse(std::abs(dy(i)), lastWorstChange_)) {
       lastWorstChange_ = std::abs(dy(i));
       lastWorstVar_ = i;
     }
@@ -155,6 +164,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       yNew_ -= dy_;
       const double size = weightedNorm(dy_, yNew_, false);
       noteWorst(g_, dy_);
+      if (!std::isfinite(size)) break;  // a NaN or infinite residual: this attempt failed
       if (observer_)
         observer_({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
                    lastWorstChange_},
@@ -186,6 +196,10 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   ypNew_ = cj * yNew_ + base_;
   predictorDiff_ = yNew_ - yPred_;
   *errorNorm = errorRatio * weightedNorm(predictorDiff_, yNew_, true);
+  if (!std::isfinite(*errorNorm)) {
+    *newtonFailed = true;
+    return false;
+  }
   return *errorNorm <= 1.0;
 }
 

@@ -187,6 +187,29 @@ TEST(Run, AnUnsupportedCommandStopsTheRunWithItsLine) {
   fs::remove_all(dir);
 }
 
+TEST(Run, AFailedDynamicRunNamesTheEquationAndKeepsEveryOutputStep) {
+  // A force that grows without bound as t -> 0.55 s and has no value after it: the integrator
+  // must give up there, say when and where, and leave the outputs of 0 .. 0.5 s complete.
+  const fs::path dir = scratch("fail");
+  std::string model = kPendulum;
+  model.insert(model.find("OUTPUT/"),
+               "SFORCE/7, I=20, J=10, TRANSLATION, FUNCTION=1/SQRT(0.55-TIME)\n");
+  write(dir / "blow.adm", model);
+  const Result r = run("run blow.adm --end 1 --dtout 0.1 --quiet", dir);
+  EXPECT_EQ(r.status, 2) << r.output;
+  EXPECT_NE(r.output.find("the dynamic analysis failed at time 5.5"), std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("PART/2"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("SFORCE/7"), std::string::npos) << r.output;
+  const std::string req = slurp(dir / "blow.req");
+  // Header 3 + directory 4 lines, then t = 0, 0.1, ..., 0.5: six complete records of 3 lines.
+  EXPECT_EQ(std::count(req.begin(), req.end(), '\n'), 3 + 4 + 6 * 3) << req;
+  EXPECT_NE(req.find("   5.00000E-01\n"), std::string::npos) << req;
+  const std::string msg = slurp(dir / "blow.msg");
+  EXPECT_NE(msg.find("the dynamic analysis failed"), std::string::npos) << msg;
+  fs::remove_all(dir);
+}
+
 TEST(Eval, PrintsTheValueAndTheTimeDerivative) {
   const fs::path dir = scratch("eval");
   const Result r = run("eval 'STEP(TIME,0,0,1,1)' --time 0.5 --derivative", dir);
