@@ -172,44 +172,20 @@ void MultibodySystem::elementReaction(bool motion, int element, int marker, cons
     a = toEigen(pose.a);
   }
   const auto& eqs = constraints_.equations();
+  const V3<double> o = V3<double>::from(origin);
+  const M3<double> am = M3<double>::from(a);
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
     const ConstraintEquation& eq = eqs[k];
     if (!eq.active || (motion ? eq.motion : eq.joint) != element) continue;
-    const double lambda = y[layout_.lambda(k)];
     const int side = eq.iMarker == marker ? 0 : (eq.jMarker == marker ? 1 : -1);
     if (side < 0) continue;
-    const int markers[2] = {eq.iMarker, eq.jMarker};
-    Frame<double> base[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
+    const double lambda = y[layout_.lambda(k)];
+    const Frame<double> frames[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
     for (int dir = 0; dir < 6; ++dir) {
-      using S = Dual<double>;
-      Frame<S> f[2];
-      for (int s = 0; s < 2; ++s)
-        for (int c = 0; c < 3; ++c) {
-          f[s].p[c] = S(base[s].p[c], 0.0);
-          for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(base[s].a.c[r][c], 0.0);
-        }
-      // Virtual displacement of the part that carries `marker` (both markers of an equation
-      // are on different parts, so only one side moves).
-      if (dir < 3) {
-        f[side].p[dir].d = 1.0;
-      } else {
-        Eigen::Vector3d ek = Eigen::Vector3d::Zero();
-        ek(dir - 3) = 1.0;
-        const Eigen::Vector3d pg(base[side].p.x, base[side].p.y, base[side].p.z);
-        const Eigen::Vector3d sb = a.transpose() * (pg - origin);
-        const Eigen::Vector3d dp = a * ek.cross(sb);
-        for (int c = 0; c < 3; ++c) f[side].p[c].d = dp(c);
-        const Eigen::Matrix3d am = toEigen(base[side].a);
-        for (int r = 0; r < 3; ++r) {
-          const Eigen::Vector3d da = a * ek.cross(a.transpose() * am.col(r));
-          for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da(c);
-        }
-      }
-      (void)markers;
-      const double dphi = ConstraintSet::geometry(eq, f[0], f[1]).d;
-      // The constraint force on the part is -C^T lambda.
+      // The constraint force on the part is -C^T lambda; torques in part axes about its origin.
+      const double dphi = virtualDerivative(eq, frames, side, dir, o, am);
       if (dir < 3) force(dir) -= dphi * lambda;
-      else torque(dir - 3) -= dphi * lambda;  // body axes, about the part origin
+      else torque(dir - 3) -= dphi * lambda;
     }
   }
   // Torque about the marker origin, in ground.

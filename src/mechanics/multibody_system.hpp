@@ -71,6 +71,12 @@ class MultibodySystem {
   template <class T>
   void addConstraintForce(const ConstraintEquation& eq, const T* y, const T& lambda,
                           T* g) const;
+  // d(geometry of eq)/d(virtual displacement `dir` of the part that carries marker `side`
+  // (0 = I, 1 = J)): dir 0-2 translate along ground axes, 3-5 turn about the part's own axes.
+  // `origin` and `axes` are that part's frame; `frames` the two marker frames.
+  template <class T>
+  static T virtualDerivative(const ConstraintEquation& eq, const Frame<T> frames[2], int side,
+                             int dir, const V3<T>& origin, const M3<T>& axes);
   template <class T>
   void addSForces(double t, const T* y, T* g) const;
   template <class T>
@@ -113,41 +119,45 @@ Frame<T> MultibodySystem::frame(int marker, const T* y) const {
 }
 
 template <class T>
+T MultibodySystem::virtualDerivative(const ConstraintEquation& eq, const Frame<T> frames[2],
+                                     int side, int dir, const V3<T>& origin, const M3<T>& axes) {
+  using S = Dual<T>;
+  Frame<S> f[2];
+  for (int s = 0; s < 2; ++s)
+    for (int c = 0; c < 3; ++c) {
+      f[s].p[c] = S(frames[s].p[c], T(0.0));
+      for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(frames[s].a.c[r][c], T(0.0));
+    }
+  if (dir < 3) {
+    f[side].p[dir].d = T(1.0);
+  } else {
+    // A <- A (I + [e_k] x): points and axes of the part turn about its k-th body axis.
+    V3<T> ek(T(0.0), T(0.0), T(0.0));
+    ek[dir - 3] = T(1.0);
+    const V3<T> dp = axes * cross(ek, axes.tmul(frames[side].p - origin));
+    for (int c = 0; c < 3; ++c) f[side].p[c].d = dp[c];
+    for (int r = 0; r < 3; ++r) {
+      const V3<T> da = axes * cross(ek, axes.tmul(frames[side].a.c[r]));
+      for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da[c];
+    }
+  }
+  return ConstraintSet::geometry(eq, f[0], f[1]).d;
+}
+
+template <class T>
 void MultibodySystem::addConstraintForce(const ConstraintEquation& eq, const T* y,
                                          const T& lambda, T* g) const {
-  using S = Dual<T>;
-  const model::Marker* mk[2] = {&model_->markers[eq.iMarker], &model_->markers[eq.jMarker]};
-  Frame<T> base[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
+  const Frame<T> frames[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
+  const int markers[2] = {eq.iMarker, eq.jMarker};
   for (int side = 0; side < 2; ++side) {
-    const int body = model_->parts[mk[side]->part].body;
+    const int body = model_->parts[model_->markers[markers[side]].part].body;
     if (body < 0) continue;
-    BodyPose<T> pose = bodyPose(layout_, body, y);
-    const V3<T> sb = V3<T>::from(mk[side]->position);
-    const M3<T> ab = M3<T>::from(mk[side]->orientation);
+    const BodyPose<T> pose = bodyPose(layout_, body, y);
     for (int dir = 0; dir < 6; ++dir) {
-      Frame<S> f[2];
-      for (int s = 0; s < 2; ++s) {
-        for (int c = 0; c < 3; ++c) {
-          f[s].p[c] = S(base[s].p[c], T(0.0));
-          for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(base[s].a.c[r][c], T(0.0));
-        }
-      }
-      // Seed the virtual displacement of this body: delta r (ground) or delta pi (body axes).
-      if (dir < 3) {
-        f[side].p[dir].d = T(1.0);
-      } else {
-        V3<T> ek(T(0.0), T(0.0), T(0.0));
-        ek[dir - 3] = T(1.0);
-        const V3<T> dp = pose.a * cross(ek, sb);
-        for (int c = 0; c < 3; ++c) f[side].p[c].d = dp[c];
-        for (int r = 0; r < 3; ++r) {
-          const V3<T> da = pose.a * cross(ek, ab.c[r]);
-          for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da[c];
-        }
-      }
-      const S val = ConstraintSet::geometry(eq, f[0], f[1]);
-      const int row = layout_.body(body) + (dir < 3 ? StateLayout::kV + dir : StateLayout::kW + dir - 3);
-      g[row] = g[row] + val.d * lambda;
+      const T d = virtualDerivative(eq, frames, side, dir, pose.r, pose.a);
+      const int row = layout_.body(body) +
+                      (dir < 3 ? StateLayout::kV + dir : StateLayout::kW + dir - 3);
+      g[row] = g[row] + d * lambda;
     }
   }
 }
