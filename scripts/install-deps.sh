@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev          # dense linear algebra in the numerical core
   libgtest-dev libgmock-dev  # unit and validation tests
   libbenchmark-dev       # micro-benchmarks in bench/
+  clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
 )
 
 missing=()

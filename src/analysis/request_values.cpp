@@ -1,6 +1,7 @@
 #include "analysis/request_values.hpp"
 
 #include <cmath>
+#include <optional>
 
 #include "common/rotation.hpp"
 #include "mechanics/measures.hpp"
@@ -43,18 +44,39 @@ Kin markerKinematics(const mechanics::MultibodySystem& s, int marker, const Eige
   return k;
 }
 
+// The applied force element a read-back measure (SPDP, BUSH, FIELD, BEAM, VFORCE, VTORQ,
+// GFORCE) names.
+std::optional<mechanics::ForceElementRef> forceElementOf(model::MeasureKind kind, int element) {
+  using K = model::MeasureKind;
+  using FK = mechanics::ForceElementKind;
+  switch (kind) {
+    case K::SpringDamperForce: return mechanics::ForceElementRef{FK::SpringDamper, element};
+    case K::BushingForce: case K::FieldForce: case K::BeamForce:
+      return mechanics::ForceElementRef{FK::LinearField, element};
+    case K::VForceForce: case K::VTorqueForce: case K::GForceForce:
+      return mechanics::ForceElementRef{FK::VectorForce, element};
+    default: return std::nullopt;
+  }
+}
+
 // Force and torque (about the marker origin, ground axes) on `marker` from element forces.
 void elementForce(const mechanics::MultibodySystem& s, model::MeasureKind kind, int element,
                   bool atJ, double t, const Eigen::VectorXd& y, Eigen::Vector3d& f,
                   Eigen::Vector3d& tq) {
-  const auto& m = s.model();
   if (kind == model::MeasureKind::SForceForce) {
     s.sforceAction(element, atJ, t, y.data(), f, tq);
     return;
   }
-  const bool motion = kind == model::MeasureKind::MotionForce;
-  const model::Joint& j = m.joints[motion ? m.motions[element].joint : element];
-  s.elementReaction(motion, element, atJ ? j.jMarker : j.iMarker, y.data(), f, tq);
+  if (auto e = forceElementOf(kind, element)) {
+    s.forceElements().action(*e, atJ, t, y.data(), f, tq);
+    return;
+  }
+  using CE = mechanics::MultibodySystem::ConstraintElement;
+  const CE ce = kind == model::MeasureKind::MotionForce  ? CE::Motion
+                : kind == model::MeasureKind::JPrimForce ? CE::JPrim
+                                                         : CE::Joint;
+  const auto [iMarker, jMarker] = s.elementMarkers(ce, element);
+  s.elementReaction(ce, element, atJ ? jMarker : iMarker, y.data(), f, tq);
 }
 
 double component(const Eigen::Vector3d& f, const Eigen::Vector3d& tq, int comp,
@@ -91,10 +113,47 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
     case K::WDTY: return wdt.dot(k.col(1));
     case K::WDTZ: return wdt.dot(k.col(2));
     case K::WDTM: return wdt.norm();
-    case K::JointForce: case K::MotionForce: case K::SForceForce: {
+    case K::JointForce: case K::MotionForce: case K::SForceForce: case K::JPrimForce:
+    case K::SpringDamperForce: case K::BushingForce: case K::FieldForce: case K::BeamForce:
+    case K::VForceForce: case K::VTorqueForce: case K::GForceForce: {
       Eigen::Vector3d f, tq;
       elementForce(s, ms.kind, ms.element, ms.atJ == 1, t, y, f, tq);
       return component(f, tq, ms.component, k);
+    }
+    case K::NetForce: {
+      // C++ semantics: with j omitted or 0 every element acting on marker i; with j, only the
+      // elements acting between i and j. Components in k axes (ground when omitted).
+      const auto& m = s.model();
+      Eigen::Vector3d ft = Eigen::Vector3d::Zero(), tt = Eigen::Vector3d::Zero(), f, tq;
+      auto acts = [&](int a, int b) {
+        return (a == ms.i && (ms.j < 0 || b == ms.j)) || (b == ms.i && (ms.j < 0 || a == ms.j));
+      };
+      for (int e = 0; e < static_cast<int>(m.joints.size()); ++e)
+        if (acts(m.joints[e].iMarker, m.joints[e].jMarker)) {
+          s.elementReaction(false, e, ms.i, y.data(), f, tq);
+          ft += f;
+          tt += tq;
+        }
+      for (int e = 0; e < static_cast<int>(m.jprims.size()); ++e)
+        if (acts(m.jprims[e].iMarker, m.jprims[e].jMarker)) {
+          s.elementReaction(mechanics::MultibodySystem::ConstraintElement::JPrim, e, ms.i,
+                            y.data(), f, tq);
+          ft += f;
+          tt += tq;
+        }
+      for (int e = 0; e < static_cast<int>(m.motions.size()); ++e) {
+        const auto& jt = m.motions[e];  // the markers it acts between
+        if (acts(jt.iMarker, jt.jMarker)) {
+          s.elementReaction(true, e, ms.i, y.data(), f, tq);
+          ft += f;
+          tt += tq;
+        }
+      }
+      // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...).
+      s.forceElementsOnMarker(ms.i, ms.j, t, y.data(), f, tq);
+      ft += f;
+      tt += tq;
+      return component(ft, tt, ms.component, k);
     }
     case K::Time:
       return t;
@@ -148,7 +207,7 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
       put(i.a - j.a, i.alpha - j.alpha, true);
       break;
     case RK::Force: {
-      // Every joint, motion and SFORCE acting between I and J, on I.
+      // Every joint, motion and force element acting between I and J, on I.
       const auto& m = s.model();
       Eigen::Vector3d ft = Eigen::Vector3d::Zero(), tt = Eigen::Vector3d::Zero();
       auto between = [&](int a, int b) {
@@ -160,18 +219,24 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
           s.elementReaction(false, e, r.iMarker, y.data(), f, tq);
           ft += f; tt += tq;
         }
+      for (int e = 0; e < static_cast<int>(m.jprims.size()); ++e)
+        if (between(m.jprims[e].iMarker, m.jprims[e].jMarker)) {
+          s.elementReaction(mechanics::MultibodySystem::ConstraintElement::JPrim, e, r.iMarker,
+                            y.data(), f, tq);
+          ft += f; tt += tq;
+        }
       for (int e = 0; e < static_cast<int>(m.motions.size()); ++e) {
-        const auto& jt = m.joints[m.motions[e].joint];
+        const auto& jt = m.motions[e];  // the markers it acts between
         if (between(jt.iMarker, jt.jMarker)) {
           s.elementReaction(true, e, r.iMarker, y.data(), f, tq);
           ft += f; tt += tq;
         }
       }
-      for (int e = 0; e < static_cast<int>(m.sforces.size()); ++e)
-        if (between(m.sforces[e].iMarker, m.sforces[e].jMarker)) {
-          s.sforceAction(e, m.sforces[e].iMarker != r.iMarker, t, y.data(), f, tq);
-          ft += f; tt += tq;
-        }
+      // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...) between I and J.
+      if (r.jMarker >= 0) {
+        s.forceElementsOnMarker(r.iMarker, r.jMarker, t, y.data(), f, tq);
+        ft += f; tt += tq;
+      }
       put(ft, tt, true);
       break;
     }

@@ -9,6 +9,7 @@
 #include "analysis/request_values.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
+#include "mechanics/loop_count.hpp"
 #include "model/model_builder.hpp"
 
 namespace openmss::analysis {
@@ -81,22 +82,22 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   }
   msg_.line("");
   msg_.line(" Model title: " + dataset.title);
-  if (diags_.hasErrors()) {
-    msg_.line(" The data set has " + std::to_string(diags_.errorCount()) +
+  // Only this data set's errors count: at the prompt, earlier commands may have failed.
+  if (readDiags.hasErrors()) {
+    msg_.line(" The data set has " + std::to_string(readDiags.errorCount()) +
               " error(s); no analysis is possible.");
+    system_.reset();  // it refers to the model just replaced
     return false;
   }
   system_ = std::make_unique<mechanics::MultibodySystem>(*model_);
   y_ = system_->initialState();
   yp_ = Eigen::VectorXd::Zero(y_.size());
   t_ = 0.0;
+  initialized_ = false;  // a model loaded at the prompt after a run starts afresh
 
   // Model summary and degree-of-freedom analysis at the data set's configuration.
   const model::Model& m = *model_;
-  int constraintCount = 0;
-  for (const auto& j : m.joints) constraintCount += mechanics::ConstraintSet::equationCount(j.type);
-  constraintCount += static_cast<int>(m.motions.size());
-  gruebler_ = 6 * m.bodyCount() - constraintCount;
+  gruebler_ = mechanics::ConstraintSet::grueblerCount(m);
   auto redundancy = mechanics::removeRedundantConstraints(*system_, y_);
   dof_ = 6 * m.bodyCount() - redundancy.rank;
   msg_.line("");
@@ -113,6 +114,10 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   msg_.line("   Gruebler count:       " + std::to_string(gruebler_) + " degrees of freedom");
   msg_.line("   Degrees of freedom:   " + std::to_string(dof_) +
             " (from the rank of the constraint Jacobian)");
+  if (const auto loops = mechanics::countLoops(m); true)
+    msg_.line("   Loops:                " + std::to_string(loops.independent) + " independent, " +
+              (loops.enumerated ? std::to_string(loops.dependent) : "(not enumerated)") +
+              " dependent");
   for (int k : redundancy.removed) {
     const std::string text = "redundant constraint equation removed: " +
                              system_->constraints().describe(k, m) +
@@ -138,6 +143,7 @@ bool Session::execute(const language::Statement& c) {
   if (c.name == "SIMULATE") return simulate(c);
   if (c.name == "INTEGRATOR" || c.name == "GSTIFF") return setIntegrator(c);
   if (c.name == "OUTPUT") return setOutput(c);
+  if (c.name == "EQUILIBRIUM" || c.name == "IC") return setAnalysisParameters(c);
   error(c, c.name + " is not supported yet by the solver",
         "README.md lists the supported commands; remove this one or run it elsewhere.");
   return false;
@@ -188,7 +194,7 @@ bool Session::initialConditions() {
   const model::Model& m = *model_;
   msg_.line("");
   msg_.line(" Begin initial conditions (time " + fmt("%.6E", t_) + ")");
-  auto asm_ = mechanics::assemblePositions(*system_, t_, y_, 1e-10, 25);
+  auto asm_ = assembleForInitialConditions();  // IC parameters and EXACT (session_statics.cpp)
   for (int b = 0; b < m.bodyCount(); ++b) {
     if (asm_.partMoves[b] > 1e-9 || asm_.partTurns[b] > 1e-9)
       msg_.line("   PART/" + std::to_string(m.parts[m.movingParts[b]].id) + " moved by " +
@@ -279,12 +285,7 @@ bool Session::simulate(const language::Statement& c) {
   const bool kin = c.has("KINEMATICS");
   const bool dyn = c.has("DYNAMICS");
   const bool trans = c.has("TRANSIENT");
-  for (const char* other : {"STATICS", "INITIAL_CONDITIONS"})
-    if (c.has(other)) {
-      error(c, std::string("SIMULATE/") + other + " is not supported yet",
-            "Use SIMULATE/TRANSIENT, DYNAMICS or KINEMATICS.");
-      return false;
-    }
+  if (c.has("STATICS") || c.has("INITIAL_CONDITIONS")) return simulateStaticsOrInitialConditions(c);
   if (!kin && !dyn && !trans) {
     error(c, "the kind of simulation is missing",
           "Write SIMULATE/TRANSIENT (or DYNAMICS, KINEMATICS), END=..., DTOUT=... or STEPS=....");

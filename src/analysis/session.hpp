@@ -8,6 +8,7 @@
 #include "analysis/message_log.hpp"
 #include "common/diagnostics.hpp"
 #include "language/dataset.hpp"
+#include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model.hpp"
 #include "output/request_file.hpp"
@@ -57,6 +58,11 @@ class Session {
   bool setIntegrator(const language::Statement& command);
   bool setOutput(const language::Statement& command);
   bool initialConditions();
+  // Statics and initial-condition analyses (session_statics.cpp).
+  bool setAnalysisParameters(const language::Statement& command);  // EQUILIBRIUM, IC commands
+  bool simulateStaticsOrInitialConditions(const language::Statement& command);
+  bool staticEquilibriumAt(double t);
+  mechanics::AssemblyResult assembleForInitialConditions();
   bool writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp);
   void report(const Diagnostic& d);
   void error(const language::Statement& s, const std::string& message, const std::string& hint);

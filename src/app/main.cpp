@@ -1,4 +1,5 @@
-// openmss: the command-line program. Subcommands: run, check, eval (see --help).
+// openmss: the command-line program. Subcommands: run, check, eval (see --help); with no
+// arguments, the interactive command prompt (prompt.cpp).
 
 #include <unistd.h>
 
@@ -6,15 +7,19 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iostream>
 #include <sstream>
 #include <string>
 #include <vector>
 
 #include "analysis/session.hpp"
+#include "app/command_runner.hpp"
+#include "app/prompt.hpp"
 #include "expr/standalone.hpp"
 #include "language/command_reader.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
+#include "mechanics/loop_count.hpp"
 #include "model/model_builder.hpp"
 
 namespace fs = std::filesystem;
@@ -26,6 +31,8 @@ constexpr const char* kMainHelp =
     "openmss - mechanical system simulation with ADAMS/Solver data sets\n"
     "\n"
     "Usage:\n"
+    "  openmss                                      interactive prompt: ADAMS commands from\n"
+    "                                               the terminal (HELP lists them)\n"
     "  openmss run FILE.acf [--outdir DIR]          run an ADAMS command file\n"
     "  openmss run FILE.adm [--end T] [--steps N | --dtout H] [--outdir DIR]\n"
     "                                               run a model with a transient simulation\n"
@@ -69,17 +76,6 @@ void printDiagnostics(const Diagnostics& d) {
   for (const auto& x : d.all()) std::fprintf(stderr, "%s\n", format(x).c_str());
 }
 
-std::vector<std::string> fileLines(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::vector<std::string> lines;
-  std::string l;
-  while (std::getline(in, l)) {
-    if (!l.empty() && l.back() == '\r') l.pop_back();
-    lines.push_back(l);
-  }
-  return lines;
-}
-
 int printSummary(const analysis::Session& s, bool ok) {
   const model::Model* m = s.model();
   if (!m) return 1;
@@ -99,56 +95,14 @@ int printSummary(const analysis::Session& s, bool ok) {
 }
 
 int runCommandFile(const std::string& path, const std::string& outdir, bool quiet) {
-  Diagnostics diags;
-  language::CommandFile cf;
-  language::readCommandFile(path, cf, diags);
-  if (diags.hasErrors()) {
-    printDiagnostics(diags);
-    return 1;
-  }
-  printDiagnostics(diags);
   analysis::SessionOptions opt;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
   analysis::Session session(opt);
-  const fs::path base = fs::path(path).parent_path();
-  bool ok = true;
-  bool loaded = false;
-  if (!cf.modelFile.empty()) {
-    fs::path model = cf.modelFile;
-    if (model.is_relative()) model = base / model;
-    if (!fs::exists(model) && model.extension().empty()) model += ".adm";
-    std::string prefix = cf.outputPrefix.empty() ? model.stem().string() : cf.outputPrefix;
-    loaded = session.loadModel(model.string(), prefix);
-    if (!loaded) {
-      std::fprintf(stderr, "openmss: the model %s has errors; nothing was simulated\n",
-                   model.string().c_str());
-      return 1;
-    }
-  }
-  const auto lines = fileLines(path);
-  for (const auto& c : cf.commands) {
-    for (int l = c.where.line; l >= 1 && l <= std::max(c.lastLine, c.where.line) &&
-                               l <= static_cast<int>(lines.size());
-         ++l)
-      session.echoCommand(lines[l - 1]);
-    if (c.name == "FILE" && c.has("MODEL")) {
-      const auto* a = c.find("MODEL");
-      fs::path model = a->values.empty() ? "" : a->values[0].text;
-      if (model.is_relative()) model = base / model;
-      if (!fs::exists(model) && model.extension().empty()) model += ".adm";
-      std::string prefix = model.stem().string();
-      if (const auto* p = c.find("OUTPUT_PREFIX"); p && !p->values.empty()) prefix = p->values[0].text;
-      if (!session.loadModel(model.string(), prefix)) return 1;
-      loaded = true;
-      continue;
-    }
-    if (!session.execute(c)) {
-      ok = false;
-      break;
-    }
-    if (session.stopped()) break;
-  }
+  app::CommandRunner runner(session, stdout);
+  const app::RunOutcome outcome = runner.runCommandFile(path);
+  if (outcome == app::RunOutcome::InputError) return 1;
+  const bool ok = outcome == app::RunOutcome::Completed;
   if (!quiet) printSummary(session, ok);
   return ok ? 0 : 2;
 }
@@ -192,15 +146,16 @@ int check(const std::string& path) {
   }
   mechanics::MultibodySystem system(m);
   Eigen::VectorXd y = system.initialState();
-  int gruebler = 6 * m.bodyCount();
-  for (const auto& j : m.joints) gruebler -= mechanics::ConstraintSet::equationCount(j.type);
-  gruebler -= static_cast<int>(m.motions.size());
+  const int gruebler = mechanics::ConstraintSet::grueblerCount(m);
+  const mechanics::LoopCount loops = mechanics::countLoops(m);
   auto red = mechanics::removeRedundantConstraints(system, y);
   std::printf("%s: %s\n", path.c_str(), m.title.c_str());
   std::printf("  %d moving parts, %zu joints, %zu motions, %zu SFORCEs, %zu requests\n",
               m.bodyCount(), m.joints.size(), m.motions.size(), m.sforces.size(),
               m.requests.size());
   std::printf("  Gruebler count: %d\n", gruebler);
+  std::printf("  loops: %d independent, %s dependent\n", loops.independent,
+              loops.enumerated ? std::to_string(loops.dependent).c_str() : "(not enumerated)");
   for (int k : red.removed)
     std::printf("  redundant: %s\n", system.constraints().describe(k, m).c_str());
   std::printf("DOF %d\n", 6 * m.bodyCount() - red.rank);
@@ -240,9 +195,14 @@ int eval(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc < 2 || std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
+  if (argc < 2) {
+    app::PromptOptions prompt;
+    prompt.interactive = isatty(STDIN_FILENO) != 0;
+    return app::runPrompt(std::cin, prompt);
+  }
+  if (std::string(argv[1]) == "--help" || std::string(argv[1]) == "-h") {
     std::printf("%s", kMainHelp);
-    return argc < 2 ? 64 : 0;
+    return 0;
   }
   const std::string cmd = argv[1];
   if (cmd == "run") {

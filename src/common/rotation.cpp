@@ -76,6 +76,35 @@ bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& 
   return true;
 }
 
+Eigen::Vector3d bodyFixedAngles(const Eigen::Matrix3d& r, int i, int j, int k) {
+  if (i == k) {
+    // Proper Euler sequence i-j-i; `o` is the third axis, eps the parity of (i, j, o).
+    const int o = 3 - i - j;
+    const double eps = ((j - i + 3) % 3 == 1) ? 1.0 : -1.0;
+    const double t2 = std::acos(std::clamp(r(i, i), -1.0, 1.0));
+    if (std::sqrt(r(j, i) * r(j, i) + r(o, i) * r(o, i)) < 1e-12)
+      return {std::atan2(-eps * r(j, o) * (r(i, i) > 0 ? 1.0 : -1.0), r(j, j)), t2, 0.0};
+    return {std::atan2(r(j, i), -eps * r(o, i)), t2, std::atan2(r(i, j), eps * r(i, o))};
+  }
+  // Tait-Bryan sequence i-j-k; eps the parity of (i, j, k).
+  const double eps = ((j - i + 3) % 3 == 1) ? 1.0 : -1.0;
+  const double s2 = std::clamp(eps * r(i, k), -1.0, 1.0);
+  const double t2 = std::asin(s2);
+  if (std::abs(s2) > 1.0 - 1e-12)
+    return {std::atan2(eps * r(k, j), r(j, j)), t2, 0.0};
+  return {std::atan2(-eps * r(j, k), r(k, k)), t2, std::atan2(-eps * r(i, j), r(i, i))};
+}
+
+bool orientSequence(int code, int* first, int* second, int* third) {
+  static const int table[10][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2},
+                                   {2, 1, 0}, {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}};
+  if (code < 1 || code > 10) return false;
+  *first = table[code - 1][0];
+  *second = table[code - 1][1];
+  *third = table[code - 1][2];
+  return true;
+}
+
 Eigen::Vector4d quaternionFromMatrix(const Eigen::Matrix3d& a) {
   const double tr = a.trace();
   Eigen::Vector4d q;

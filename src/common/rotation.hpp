@@ -11,8 +11,13 @@ Eigen::Matrix3d matrixFromEuler313(double psi, double theta, double phi);
 // Inverse of the above; theta in [0, pi]. At theta = 0 or pi psi and phi are not separable:
 // psi takes the whole rotation and phi = 0.
 Eigen::Vector3d euler313FromMatrix(const Eigen::Matrix3d& a);
-// Body-fixed 1-2-3 and 3-2-1 and the other sequences used by ORIENT are derived in the
-// mechanics from the matrix.
+// Angles (t1, t2, t3) of a body-fixed rotation sequence about axes a, b, c (0 = x, 1 = y,
+// 2 = z): A = R_a(t1) R_b(t2) R_c(t3). Tait-Bryan sequences (a, b, c distinct) give
+// t2 in [-pi/2, pi/2]; proper Euler sequences (a == c) give t2 in [0, pi]. At the singular
+// middle angle t1 takes the whole rotation and t3 = 0.
+Eigen::Vector3d bodyFixedAngles(const Eigen::Matrix3d& a, int first, int second, int third);
+// ORIENT system codes 1..10 (digest 2.3) as axis sequences; false for other codes.
+bool orientSequence(int code, int* first, int* second, int* third);
 
 // Axis-point frame: z along (zPoint - origin); x toward xPoint, made orthogonal to z.
 // Returns false when the points are degenerate (coincident or collinear).

@@ -4,6 +4,8 @@
 // mandatory in a command because a command changes only what it names.
 
 #include <algorithm>
+#include <string>
+#include <utility>
 
 #include "language/schema_builder.hpp"
 #include "language/statement_table.hpp"
@@ -43,6 +45,53 @@ StatementSpec integratorMethod(std::string name) {
                    {real("ERROR"), real("HINIT"), real("HMAX"), real("HMIN"), integer("KMAX"),
                     integer("MAXIT"), word("PATTERN", {"T", "F", "TRUE", "FALSE"}, 1, 10),
                     word("INTERPOLATE", {"ON", "OFF"}), flag("DEFAULT"), flag("LIST")});
+}
+
+// What each command does, in one line for HELP (seed §6.6, digest §4). Statement commands
+// are described by kStatementCommands instead.
+const std::vector<std::pair<std::string, std::string>> kCommandSummaries = {
+    {"GSTIFF", "sets the error tolerance and steps of the GSTIFF integrator"},
+    {"WSTIFF", "sets the error tolerance and steps of the WSTIFF integrator"},
+    {"DSTIFF", "sets the error tolerance and steps of the DASSL integrator"},
+    {"ACTIVATE", "switches elements back on for the next SIMULATE"},
+    {"DEACTIVATE", "switches elements off for the next SIMULATE"},
+    {"CONTROL", "passes control to a user control subroutine (ROUTINE=)"},
+    {"FILE", "loads a data set (MODEL=) or runs a command file (COMMAND=)"},
+    {"LINEAR", "linear analysis: eigenvalues or state matrices"},
+    {"RELOAD", "restores the model and state written by SAVE"},
+    {"SAVE", "saves the model and state (STATES, SYSTEM) to a file"},
+    {"SIMULATE", "runs an analysis: KINEMATICS, STATICS, DYNAMICS or TRANSIENT"},
+    {"STOP", "closes the output files and ends the session"},
+    {"HELP", "lists the commands and whether the solver supports them yet"},
+    {"INFO", "lists position, velocity, acceleration or force of a marker"},
+    {"MENU", "lists the command menu"},
+    {"SHOW", "shows CPU time, graphics options, simulation status or time"},
+    {"TIME", "shows the simulation time, step size and step counts"},
+    {"AINIT", "resets the graphics display to its original orientation"},
+    {"AUTOSCALE", "recenters and rescales the graphics display"},
+    {"BACKUP", "shrinks the graphics display to a rectangle"},
+    {"ZOOM", "enlarges a rectangle of the graphics display"},
+    {"CENTER", "picks a new center for the graphics display"},
+    {"DRAW", "redraws the graphics display"},
+    {"SET", "sets graphics display options"},
+    {"RETURN", "leaves graphics input and continues the simulation"},
+    {"ERASE", "turns off the graphics of up to three GRAPHICS statements"},
+    {"RESTORE", "turns on the graphics of up to three GRAPHICS statements"},
+    {"PLOT", "plots the output of a REQUEST"},
+};
+
+// Every command gets its HELP line here, so a command added to the table without one shows
+// up in Schema.EveryCommandHasASummary.
+void describeCommands(std::vector<StatementSpec>& table) {
+  for (auto& c : table) {
+    if (std::find(kStatementCommands.begin(), kStatementCommands.end(), c.name) !=
+        kStatementCommands.end()) {
+      c.summary = "redefines or lists " + c.name + " statement data";
+      continue;
+    }
+    for (const auto& [name, summary] : kCommandSummaries)
+      if (name == c.name) c.summary = summary;
+  }
 }
 
 }  // namespace
@@ -100,6 +149,7 @@ std::vector<StatementSpec> buildCommandTable(const std::vector<StatementSpec>& s
   t.push_back(statement("ERASE", N, {integer("ID", 1, 3)}));
   t.push_back(statement("RESTORE", N, {integer("ID", 1, 3)}));
   t.push_back(statement("PLOT", N, {integer("REQUEST"), integer("COMPONENT")}));
+  describeCommands(t);
   return t;
 }
 

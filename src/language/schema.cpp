@@ -32,14 +32,17 @@ std::vector<StatementSpec> finalStatementTable() {
   auto t = buildStatementTable();
   assignAutomaticAbbreviations(t);
   markSupported(t, {"TITLE", "UNITS", "PART", "MARKER", "JOINT", "MOTION", "SFORCE", "ACCGRAV",
-                    "REQUEST", "GRAPHICS", "OUTPUT", "END"});
+                    "REQUEST", "GRAPHICS", "OUTPUT", "END", "SPRINGDAMPER", "BUSHING", "FIELD",
+                    "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC"});
   return t;
 }
 
 std::vector<StatementSpec> finalCommandTable() {
   auto t = buildCommandTable(buildStatementTable());
   assignAutomaticAbbreviations(t);
-  markSupported(t, {"OUTPUT", "INTEGRATOR", "SIMULATE", "STOP", "FILE"});
+  // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
+  markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "SIMULATE", "STOP", "FILE", "HELP",
+                    "EQUILIBRIUM", "IC"});
   return t;
 }
 

@@ -57,6 +57,8 @@ struct StatementSpec {
   // Whether the solver implements this statement or command yet. The model layer decides
   // what to do with an unsupported one; the reader only reads it.
   bool solverSupported = false;
+  // Commands only: one line saying what the command does, printed by HELP.
+  std::string summary;
   std::vector<ArgumentSpec> arguments;
 
   const ArgumentSpec* findArgument(std::string_view canonicalName) const;

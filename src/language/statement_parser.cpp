@@ -335,11 +335,13 @@ void GroupParser::parseArguments(Statement& st, const StatementSpec& spec, bool 
       slashReported = true;
     } else if (needSeparator && !separatorPending) {
       Cursor save = c_;
-      std::string next = readName();
-      if (next.empty()) next = std::string(1, peek());
+      const std::string next = readName();
       c_ = save;
-      diags_.error(here(), st.subject(), "missing ',' before '" + next + "'",
-                   "Separate arguments with ','");
+      // When no name follows, parseArgument reports what was found instead; one message
+      // per problem.
+      if (!next.empty())
+        diags_.error(here(), st.subject(), "missing ',' before '" + next + "'",
+                     "Separate arguments with ','");
     }
     if (!parseArgument(st, spec)) return;
     needSeparator = true;
@@ -620,7 +622,13 @@ bool GroupParser::checkValue(const Statement& st, const ArgumentSpec& as, Value&
                      "Write a whole number, e.g. " + as.name + "=1");
         return false;
       }
-      if (v.degrees || std::floor(v.number) != v.number) {
+      if (v.degrees) {
+        diags_.error(v.where, st.subject(),
+                     as.name + " expects an integer; " + v.written + " is an angle in degrees",
+                     "Write a whole number without D");
+        return false;
+      }
+      if (std::floor(v.number) != v.number) {
         diags_.error(v.where, st.subject(),
                      as.name + " expects an integer; " + v.written + " is not a whole number",
                      "Write a whole number such as 2 or 2.0");

@@ -5,37 +5,62 @@ namespace {
 
 const char* kAxis[3] = {"X", "Y", "Z"};
 
-ConstraintEquation point(int axis, const model::Joint& j, int index) {
+// An equation between the markers of a joint (element = joint index) or a joint primitive.
+struct Element {
+  int iMarker, jMarker, joint, jprim;
+};
+
+ConstraintEquation base(ConstraintEquation::Kind kind, const Element& el) {
   ConstraintEquation e;
-  e.kind = ConstraintEquation::Kind::Point;
+  e.kind = kind;
+  e.iMarker = el.iMarker;
+  e.jMarker = el.jMarker;
+  e.joint = el.joint;
+  e.jprim = el.jprim;
+  return e;
+}
+
+ConstraintEquation point(int axis, const Element& el) {
+  ConstraintEquation e = base(ConstraintEquation::Kind::Point, el);
   e.axisJ = axis;
-  e.iMarker = j.iMarker;
-  e.jMarker = j.jMarker;
-  e.joint = index;
   e.label = std::string(kAxis[axis]) + " (I-J)";
   return e;
 }
 
-ConstraintEquation dotEq(int ai, int aj, const model::Joint& j, int index) {
-  ConstraintEquation e;
-  e.kind = ConstraintEquation::Kind::Dot;
+ConstraintEquation dotEq(int ai, int aj, const Element& el) {
+  ConstraintEquation e = base(ConstraintEquation::Kind::Dot, el);
   e.axisI = ai;
   e.axisJ = aj;
-  e.iMarker = j.iMarker;
-  e.jMarker = j.jMarker;
-  e.joint = index;
   e.label = std::string(kAxis[ai]) + "i." + kAxis[aj] + "j";
   return e;
 }
 
-ConstraintEquation along(int aj, const model::Joint& j, int index) {
-  ConstraintEquation e;
-  e.kind = ConstraintEquation::Kind::Along;
+ConstraintEquation along(int aj, const Element& el) {
+  ConstraintEquation e = base(ConstraintEquation::Kind::Along, el);
   e.axisJ = aj;
-  e.iMarker = j.iMarker;
-  e.jMarker = j.jMarker;
-  e.joint = index;
   e.label = std::string(kAxis[aj]) + "j.(I-J)";
+  return e;
+}
+
+// A marker's frame in ground at the data set's configuration.
+Frame<double> dataSetFrame(const model::Model& model, int marker) {
+  const model::Marker& mk = model.markers[marker];
+  const model::Part& part = model.parts[mk.part];
+  const Eigen::Vector3d p = part.position + part.orientation * mk.position;
+  const Eigen::Matrix3d a = part.orientation * mk.orientation;
+  return {V3<double>::from(p), M3<double>::from(a)};
+}
+
+// A coupled translation-rotation equation (RACKPIN, SCREW) that holds at the data set's
+// configuration: the offset is the coupling's value there.
+ConstraintEquation coupling(ConstraintEquation::Kind kind, double ratio, const Element& el,
+                            const model::Model& model, const char* label) {
+  ConstraintEquation e = base(kind, el);
+  e.ratio = ratio;
+  e.label = label;
+  const Frame<double> fi = dataSetFrame(model, el.iMarker);
+  const Frame<double> fj = dataSetFrame(model, el.jMarker);
+  e.offset = ConstraintSet::geometry(e, fi, fj);  // with offset 0: the value to take off
   return e;
 }
 
@@ -43,68 +68,172 @@ ConstraintEquation along(int aj, const model::Joint& j, int index) {
 
 int ConstraintSet::equationCount(model::JointType t) {
   switch (t) {
-    case model::JointType::Revolute: return 5;
-    case model::JointType::Spherical: return 3;
-    case model::JointType::Universal: return 4;
-    case model::JointType::Hooke: return 4;
-    case model::JointType::Translational: return 5;
-    case model::JointType::Cylindrical: return 4;
-    case model::JointType::Fixed: return 6;
+    case model::JointType::Revolute:
+      return 5;
+    case model::JointType::Spherical:
+      return 3;
+    case model::JointType::Universal:
+      return 4;
+    case model::JointType::Hooke:
+      return 4;
+    case model::JointType::Translational:
+      return 5;
+    case model::JointType::Cylindrical:
+      return 4;
+    case model::JointType::Fixed:
+      return 6;
+    case model::JointType::Convel:
+      return 4;
+    case model::JointType::Planar:
+      return 3;
+    case model::JointType::RackPin:
+      return 1;
+    case model::JointType::Screw:
+      return 1;
   }
   return 0;
+}
+
+int ConstraintSet::equationCount(model::JPrimType t) {
+  switch (t) {
+    case model::JPrimType::AtPoint:
+      return 3;
+    case model::JPrimType::InLine:
+      return 2;
+    case model::JPrimType::InPlane:
+      return 1;
+    case model::JPrimType::Orientation:
+      return 3;
+    case model::JPrimType::ParallelAxes:
+      return 2;
+    case model::JPrimType::Perpendicular:
+      return 1;
+  }
+  return 0;
+}
+
+int ConstraintSet::grueblerCount(const model::Model& model) {
+  int count = 6 * model.bodyCount();
+  for (const auto& j : model.joints) count -= equationCount(j.type);
+  for (const auto& p : model.jprims) count -= equationCount(p.type);
+  count -= static_cast<int>(model.motions.size());
+  return count;
 }
 
 ConstraintSet::ConstraintSet(const model::Model& model) {
   using JT = model::JointType;
   for (int k = 0; k < static_cast<int>(model.joints.size()); ++k) {
     const model::Joint& j = model.joints[k];
+    const Element el{j.iMarker, j.jMarker, k, -1};
     const bool coincident = j.type == JT::Revolute || j.type == JT::Spherical ||
-                            j.type == JT::Universal || j.type == JT::Hooke || j.type == JT::Fixed;
+                            j.type == JT::Universal || j.type == JT::Hooke || j.type == JT::Fixed ||
+                            j.type == JT::Convel;
     if (coincident)
-      for (int a = 0; a < 3; ++a) eqs_.push_back(point(a, j, k));
+      for (int a = 0; a < 3; ++a) eqs_.push_back(point(a, el));
     switch (j.type) {
       case JT::Revolute:
-        eqs_.push_back(dotEq(2, 0, j, k));  // zI stays parallel to zJ
-        eqs_.push_back(dotEq(2, 1, j, k));
+        eqs_.push_back(dotEq(2, 0, el));  // zI stays parallel to zJ
+        eqs_.push_back(dotEq(2, 1, el));
         break;
       case JT::Universal:
-        eqs_.push_back(dotEq(2, 2, j, k));  // the two cross-pin axes stay perpendicular
+        eqs_.push_back(dotEq(2, 2, el));  // the two cross-pin axes stay perpendicular
         break;
       case JT::Hooke:
-        eqs_.push_back(dotEq(0, 1, j, k));  // xI and yJ outline the cross piece
+        eqs_.push_back(dotEq(0, 1, el));  // xI and yJ outline the cross piece
         break;
       case JT::Fixed:
-        eqs_.push_back(dotEq(2, 0, j, k));
-        eqs_.push_back(dotEq(2, 1, j, k));
-        eqs_.push_back(dotEq(0, 1, j, k));
+        eqs_.push_back(dotEq(2, 0, el));
+        eqs_.push_back(dotEq(2, 1, el));
+        eqs_.push_back(dotEq(0, 1, el));
         break;
       case JT::Translational:
-        eqs_.push_back(dotEq(2, 0, j, k));
-        eqs_.push_back(dotEq(2, 1, j, k));
-        eqs_.push_back(dotEq(0, 1, j, k));  // no rotation about the common z axis
-        eqs_.push_back(along(0, j, k));     // I origin stays on the zJ line
-        eqs_.push_back(along(1, j, k));
+        eqs_.push_back(dotEq(2, 0, el));
+        eqs_.push_back(dotEq(2, 1, el));
+        eqs_.push_back(dotEq(0, 1, el));  // no rotation about the common z axis
+        eqs_.push_back(along(0, el));     // I origin stays on the zJ line
+        eqs_.push_back(along(1, el));
         break;
       case JT::Cylindrical:
-        eqs_.push_back(dotEq(2, 0, j, k));
-        eqs_.push_back(dotEq(2, 1, j, k));
-        eqs_.push_back(along(0, j, k));
-        eqs_.push_back(along(1, j, k));
+        eqs_.push_back(dotEq(2, 0, el));
+        eqs_.push_back(dotEq(2, 1, el));
+        eqs_.push_back(along(0, el));
+        eqs_.push_back(along(1, el));
+        break;
+      case JT::Convel: {
+        ConstraintEquation e = base(ConstraintEquation::Kind::Convel, el);
+        e.label = "Xi.Yj+Yi.Xj";
+        eqs_.push_back(e);
+        break;
+      }
+      case JT::Planar:
+        eqs_.push_back(dotEq(2, 0, el));  // the x-y planes stay parallel
+        eqs_.push_back(dotEq(2, 1, el));
+        eqs_.push_back(along(2, el));  // and I's origin stays in J's x-y plane
+        break;
+      case JT::RackPin:
+        eqs_.push_back(coupling(ConstraintEquation::Kind::RackPin, 0.5 * j.pitchDiameter, el, model,
+                                "Zj.(I-J)-PD/2*rotation"));
+        break;
+      case JT::Screw:
+        eqs_.push_back(coupling(ConstraintEquation::Kind::Screw, j.pitch / (2.0 * std::numbers::pi),
+                                el, model, "Zj.(I-J)-PITCH*rotation/2pi"));
         break;
       case JT::Spherical:
         break;
     }
   }
+  using PT = model::JPrimType;
+  for (int k = 0; k < static_cast<int>(model.jprims.size()); ++k) {
+    const model::JPrim& p = model.jprims[k];
+    const Element el{p.iMarker, p.jMarker, -1, k};
+    switch (p.type) {
+      case PT::AtPoint:
+        for (int a = 0; a < 3; ++a) eqs_.push_back(point(a, el));
+        break;
+      case PT::InLine:
+        eqs_.push_back(along(0, el));
+        eqs_.push_back(along(1, el));
+        break;
+      case PT::InPlane:
+        eqs_.push_back(along(2, el));
+        break;
+      case PT::Orientation:
+        eqs_.push_back(dotEq(2, 0, el));
+        eqs_.push_back(dotEq(2, 1, el));
+        eqs_.push_back(dotEq(0, 1, el));
+        break;
+      case PT::ParallelAxes:
+        eqs_.push_back(dotEq(2, 0, el));
+        eqs_.push_back(dotEq(2, 1, el));
+        break;
+      case PT::Perpendicular:
+        eqs_.push_back(dotEq(2, 2, el));
+        break;
+    }
+  }
+  static const char* kMotionLabel[6] = {"X (I rel J, J axes)", "Y (I rel J, J axes)",
+                                        "Z (I rel J, J axes)", "B1 (I rel J)",
+                                        "B2 (I rel J)",        "B3 (I rel J)"};
   for (int k = 0; k < static_cast<int>(model.motions.size()); ++k) {
     const model::Motion& m = model.motions[k];
-    const model::Joint& j = model.joints[m.joint];
     ConstraintEquation e;
-    e.kind = m.rotation ? ConstraintEquation::Kind::MotionRotation
-                        : ConstraintEquation::Kind::MotionTranslation;
-    e.iMarker = j.iMarker;
-    e.jMarker = j.jMarker;
+    e.iMarker = m.iMarker;
+    e.jMarker = m.jMarker;
     e.motion = k;
-    e.label = m.rotation ? "rotation about Zj" : "translation along Zj";
+    if (m.joint >= 0) {
+      e.kind = m.rotation ? ConstraintEquation::Kind::MotionRotation
+                          : ConstraintEquation::Kind::MotionTranslation;
+      e.axisJ = 2;
+      e.label = m.rotation ? "rotation about Zj" : "translation along Zj";
+    } else if (m.axis < 3) {
+      e.kind = ConstraintEquation::Kind::MotionTranslation;
+      e.axisJ = m.axis;
+      e.label = kMotionLabel[m.axis];
+    } else {
+      e.kind = ConstraintEquation::Kind::MotionAngle;
+      e.axisI = m.axis - 3;
+      e.label = kMotionLabel[m.axis];
+    }
     eqs_.push_back(e);
   }
 }
@@ -113,8 +242,13 @@ std::string ConstraintSet::describe(int k, const model::Model& model) const {
   const ConstraintEquation& e = eqs_[k];
   if (e.joint >= 0) {
     const model::Joint& j = model.joints[e.joint];
-    return "JOINT/" + std::to_string(j.id) + " (" + model::jointTypeName(j.type) +
-           ") equation " + e.label;
+    return "JOINT/" + std::to_string(j.id) + " (" + model::jointTypeName(j.type) + ") equation " +
+           e.label;
+  }
+  if (e.jprim >= 0) {
+    const model::JPrim& p = model.jprims[e.jprim];
+    return "JPRIM/" + std::to_string(p.id) + " (" + model::jprimTypeName(p.type) + ") equation " +
+           e.label;
   }
   return "MOTION/" + std::to_string(model.motions[e.motion].id) + " equation " + e.label;
 }

@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "common/rotation.hpp"
+
 namespace openmss::mechanics {
 
 Eigen::MatrixXd activeConstraintJacobian(const MultibodySystem& system, const double* y,
@@ -46,9 +48,7 @@ RedundancyReport removeRedundantConstraints(MultibodySystem& system, const Eigen
   return report;
 }
 
-namespace {
-
-void applyCorrection(const StateLayout& l, const Eigen::VectorXd& delta, Eigen::VectorXd& y) {
+void applyBodyCorrection(const StateLayout& l, const Eigen::VectorXd& delta, Eigen::VectorXd& y) {
   for (int b = 0; b < l.bodies; ++b) {
     const int o = l.body(b);
     y.segment<3>(o + StateLayout::kR) += delta.segment<3>(6 * b);
@@ -64,17 +64,96 @@ void applyCorrection(const StateLayout& l, const Eigen::VectorXd& delta, Eigen::
   }
 }
 
+namespace {
+
+Eigen::Matrix3d bodyRotation(const StateLayout& l, int body, const Eigen::VectorXd& y) {
+  return toEigen(bodyPose(l, body, y.data()).a);
+}
+
+// Body-axes rotation per unit change of the 3-1-3 angles (psi, theta, phi) of A:
+// delta pi = B delta(psi, theta, phi).
+Eigen::Matrix3d eulerRateMatrix(const Eigen::Matrix3d& a) {
+  const Eigen::Vector3d ang = euler313FromMatrix(a);
+  const double st = std::sin(ang(1)), ct = std::cos(ang(1));
+  const double sp = std::sin(ang(2)), cp = std::cos(ang(2));
+  Eigen::Matrix3d b;
+  b << st * sp, cp, 0.0,  //
+      st * cp, -sp, 0.0,  //
+      ct, 0.0, 1.0;
+  return b;
+}
+
+// Change of each body coordinate (X, Y, Z, PSI, THETA, PHI) between two states; angles are
+// compared through the rotation between them where psi and phi are not separable.
+std::array<double, 6> coordinateChange(const StateLayout& l, int body, const Eigen::VectorXd& y0,
+                                       const Eigen::VectorXd& y) {
+  const int offset = l.body(body);
+  std::array<double, 6> d{};
+  for (int k = 0; k < 3; ++k) d[k] = y(offset + k) - y0(offset + k);
+  const Eigen::Vector3d a0 = euler313FromMatrix(bodyRotation(l, body, y0));
+  const Eigen::Vector3d a1 = euler313FromMatrix(bodyRotation(l, body, y));
+  for (int k = 0; k < 3; ++k)
+    d[3 + k] = std::remainder(a1(k) - a0(k), 2.0 * 3.14159265358979323846);
+  return d;
+}
+
+// Change from y0 to y in the assembly's coordinates: translations, then per body either the
+// body-axes rotation vector of A0^T A or (EXACT angles) the change of the 3-1-3 angles.
+Eigen::VectorXd totalChange(const StateLayout& l, const Eigen::VectorXd& y0,
+                            const Eigen::VectorXd& y, const std::vector<bool>& eulerBody) {
+  Eigen::VectorXd d(6 * l.bodies);
+  for (int b = 0; b < l.bodies; ++b) {
+    const std::array<double, 6> c = coordinateChange(l, b, y0, y);
+    for (int k = 0; k < 3; ++k) d(6 * b + k) = c[k];
+    if (eulerBody[b]) {
+      for (int k = 0; k < 3; ++k) d(6 * b + 3 + k) = c[3 + k];
+    } else {
+      const Eigen::AngleAxisd turn(bodyRotation(l, b, y0).transpose() * bodyRotation(l, b, y));
+      d.segment<3>(6 * b + 3) = turn.angle() * turn.axis();
+    }
+  }
+  return d;
+}
+
 }  // namespace
 
 AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen::VectorXd& y,
                                  double tolerance, int maxIterations) {
+  AssemblyOptions options;
+  options.tolerance = tolerance;
+  options.maxIterations = maxIterations;
+  return assemblePositions(system, t, y, options);
+}
+
+AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen::VectorXd& y,
+                                 const AssemblyOptions& options) {
   AssemblyResult result;
   const StateLayout& l = system.layout();
+  const model::Model& m = system.model();
+  const int nb = l.bodies;
   const Eigen::VectorXd y0 = y;
   std::vector<int> rows;
-  for (int it = 0; it <= maxIterations; ++it) {
-    Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
-    Eigen::VectorXd phi(rows.size());
+  // Which bodies take their rotation in 3-1-3 angle increments (an EXACT angle is held).
+  std::vector<bool> eulerBody(nb, false);
+  Eigen::VectorXd columnScale = Eigen::VectorXd::Ones(6 * nb);
+  if (options.honourExact) {
+    const double s = 1.0 / std::sqrt(AssemblyOptions::kExactWeight);
+    for (int b = 0; b < nb; ++b) {
+      const auto& exact = m.parts[m.movingParts[b]].exact;
+      for (int k = 0; k < 6; ++k)
+        if (exact[k]) columnScale(6 * b + k) = s;
+      eulerBody[b] = exact[3] || exact[4] || exact[5];
+    }
+  }
+  Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
+  Eigen::MatrixXd scaledJacobian;
+  Eigen::MatrixXd transform = Eigen::MatrixXd::Identity(6 * nb, 6 * nb);
+  for (int it = 0; it <= options.maxIterations; ++it) {
+    Eigen::VectorXd phi;
+    const bool form = it == 0 || options.pattern[static_cast<size_t>(it % 10)];
+    Eigen::MatrixXd c;
+    if (form) c = activeConstraintJacobian(system, y.data(), &rows);
+    phi.resize(static_cast<Eigen::Index>(rows.size()));
     result.residual = 0.0;
     for (size_t r = 0; r < rows.size(); ++r) {
       phi(static_cast<Eigen::Index>(r)) = system.constraintValue(rows[r], t, y.data());
@@ -84,21 +163,56 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
       }
     }
     result.iterations = it;
-    if (result.residual <= tolerance) {
+    if (result.residual <= options.tolerance) {
       result.converged = true;
       break;
     }
-    if (it == maxIterations || rows.empty()) break;
+    if (it == options.maxIterations || rows.empty()) break;
+    if (form) {
+      // Coordinates: body translations, and body-axes rotations or 3-1-3 angle increments;
+      // each column scaled by 1/sqrt(weight) so that the minimum-norm solution in the scaled
+      // coordinates is the least weighted change.
+      for (int b = 0; b < nb; ++b) {
+        if (!eulerBody[b]) continue;
+        transform.block<3, 3>(6 * b + 3, 6 * b + 3) = eulerRateMatrix(bodyRotation(l, b, y));
+      }
+      scaledJacobian = c * transform * columnScale.asDiagonal();
+      cod.compute(scaledJacobian);
+    }
     // Minimum-norm correction: the least change that satisfies the linearised constraints.
-    Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod(c);
-    const Eigen::VectorXd delta = cod.solve(-phi);
-    applyCorrection(l, delta, y);
+    // With EXACT coordinates the change is measured from the data set's configuration, not from
+    // the last iterate: each step is the least-squares return to the data projected on the
+    // linearised constraints (else a first step forced through an EXACT coordinate by the
+    // linearisation would never be undone).
+    Eigen::VectorXd delta;
+    if (options.honourExact) {
+      const Eigen::VectorXd z0 =
+          columnScale.cwiseInverse().asDiagonal() * totalChange(l, y0, y, eulerBody);
+      const Eigen::VectorXd w = cod.solve(-phi + scaledJacobian * z0);
+      delta = transform * (columnScale.asDiagonal() * (w - z0));
+    } else {
+      delta = transform * (columnScale.asDiagonal() * cod.solve(-phi));
+    }
+    // TLIMIT / ALIMIT: scale the whole correction so that no body moves or turns more.
+    double scale = 1.0;
+    for (int b = 0; b < nb; ++b) {
+      const double dr = delta.segment<3>(6 * b).cwiseAbs().maxCoeff();
+      const double da = delta.segment<3>(6 * b + 3).norm();
+      if (dr > options.translationLimit) scale = std::min(scale, options.translationLimit / dr);
+      if (da > options.angleLimit) scale = std::min(scale, options.angleLimit / da);
+    }
+    applyBodyCorrection(l, scale * delta, y);
   }
-  for (int b = 0; b < l.bodies; ++b) {
+  for (int b = 0; b < nb; ++b) {
     const int o = l.body(b);
     result.partMoves.push_back((y.segment<3>(o) - y0.segment<3>(o)).norm());
     const double c = std::abs(y.segment<4>(o + StateLayout::kE).dot(y0.segment<4>(o + StateLayout::kE)));
     result.partTurns.push_back(2.0 * std::acos(std::min(1.0, c)));
+    if (!options.honourExact) continue;
+    const auto& exact = m.parts[m.movingParts[b]].exact;
+    const std::array<double, 6> d = coordinateChange(l, b, y0, y);
+    for (int k = 0; k < 6; ++k)
+      if (exact[k] && std::abs(d[k]) > 1e-9) result.exactChanged.push_back({b, k, d[k]});
   }
   return result;
 }

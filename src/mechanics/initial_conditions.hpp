@@ -3,6 +3,7 @@
 // positions with the least change to the data set, then velocities, then accelerations and
 // constraint forces. The same solves give kinematic analysis and consistent outputs.
 
+#include <array>
 #include <string>
 #include <vector>
 
@@ -28,11 +29,39 @@ struct AssemblyResult {
   int worstEquation = -1;  // equation with the largest |Phi| at the end
   std::vector<double> partMoves;  // per moving body: how far its CM moved
   std::vector<double> partTurns;  // per moving body: how far it turned (rad)
+  // EXACT coordinates the assembly had to change (they conflict with the constraints).
+  struct ExactChange {
+    int body = -1;
+    int coordinate = 0;  // 0-5: X, Y, Z, PSI, THETA, PHI
+    double change = 0.0;
+  };
+  std::vector<ExactChange> exactChanged;
+};
+
+// Controls of the position assembly (IC statement, docs/theory.md §7).
+struct AssemblyOptions {
+  double tolerance = 1e-10;  // largest |Phi| accepted (IC ERROR)
+  int maxIterations = 25;    // IC MAXIT
+  double translationLimit = 1e300;  // largest translation of a body per iteration (TLIMIT)
+  double angleLimit = 1e300;        // largest rotation of a body per iteration (ALIMIT, rad)
+  std::array<bool, 10> pattern = {true, true, true, true, true,
+                                  true, true, true, true, true};  // re-form C at iteration j
+  // Hold the coordinates PART/EXACT names: they weigh kExactWeight times a free coordinate.
+  bool honourExact = false;
+  static constexpr double kExactWeight = 1e12;
 };
 
 // Positions: Gauss-Newton with minimum-norm corrections of body positions and orientations.
 AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen::VectorXd& y,
                                  double tolerance, int maxIterations);
+// The same with step limits, a Jacobian pattern and EXACT coordinates: the least change in the
+// weighted sense, EXACT coordinates (X, Y, Z of the CM; 3-1-3 angles of the body frame) weighing
+// kExactWeight times the others.
+AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen::VectorXd& y,
+                                 const AssemblyOptions& options);
+// Applies a correction of body positions (ground) and body-axes rotations (6 per body).
+void applyBodyCorrection(const StateLayout& layout, const Eigen::VectorXd& delta,
+                         Eigen::VectorXd& y);
 
 // Velocities satisfying C u = Phi_t-terms, changing given velocities as little as possible
 // (a velocity given in the data set weighs 1e6 times an unset one).

@@ -65,12 +65,24 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
       }
       return true;
     }
+    case K::IncludedAngle: {
+      // The angle between the line from I to J and the line from J to K (always >= 0).
+      const V3<T> kp = markerOrGround(m, l, ms.k, y).p;
+      const V3<T> a = j.p - i.p, b = kp - j.p;
+      *out = acosOf(dot(a, b) / (norm(a) * norm(b)));
+      return true;
+    }
     case K::Orient: {
       if constexpr (std::is_same_v<T, double>) {
         const M3<T> r = j.a.transpose() * i.a;
         const Eigen::Vector4d q = quaternionFromMatrix(toEigen(r));
         if (ms.code == 27) {
           *out = q(ms.component - 1);
+          return true;
+        }
+        int a = 0, b = 0, c = 0;
+        if (orientSequence(ms.code, &a, &b, &c)) {
+          *out = bodyFixedAngles(toEigen(r), a, b, c)(ms.component - 1);
           return true;
         }
       }

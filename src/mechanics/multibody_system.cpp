@@ -1,15 +1,19 @@
 #include "mechanics/multibody_system.hpp"
 
+#include <limits>
 #include <numbers>
 
 #include "common/rotation.hpp"
+#include "mechanics/motion_profile.hpp"
 
 namespace openmss::mechanics {
 
 MultibodySystem::MultibodySystem(const model::Model& model)
-    : model_(&model), constraints_(model) {
+    : model_(&model), constraints_(model), forces_(model) {
   layout_.bodies = model.bodyCount();
   layout_.constraintEquations = constraints_.size();
+  motionCache_.assign(model.motions.size(),
+                      {std::numeric_limits<double>::quiet_NaN(), expr::TimeJet{}});
   for (int p : model.movingParts) {
     mass_.push_back(model.parts[p].mass / model.units.ucf);
     inertia_.push_back(model.parts[p].inertia / model.units.ucf);
@@ -62,7 +66,10 @@ void MultibodySystem::newtonMatrix(double t, const Eigen::VectorXd& y, const Eig
 
 expr::TimeJet MultibodySystem::motionJet(int k, double t) const {
   const ConstraintEquation& eq = constraints_.equations()[k];
-  return model_->motions[eq.motion].function.evaluateTimeJet(t);
+  auto& cached = motionCache_[eq.motion];
+  if (cached.first != t || std::isnan(cached.second.value))
+    cached = {t, motionProfile(model_->motions[eq.motion], t)};
+  return cached.second;
 }
 
 double MultibodySystem::constraintValue(int k, double t, const double* y) const {
@@ -71,8 +78,7 @@ double MultibodySystem::constraintValue(int k, double t, const double* y) const 
   if (eq.motion >= 0) {
     const double target = motionJet(k, t).value;
     value -= target;
-    if (eq.kind == ConstraintEquation::Kind::MotionRotation)
-      value -= wrapDelta(value + target, target);
+    if (ConstraintSet::wrapsAngle(eq)) value -= wrapDelta(value + target, target);
   }
   return value;
 }
@@ -156,8 +162,9 @@ void MultibodySystem::massMatrix(Eigen::MatrixXd& m) const {
   }
 }
 
-void MultibodySystem::elementReaction(bool motion, int element, int marker, const double* y,
-                                      Eigen::Vector3d& force, Eigen::Vector3d& torque) const {
+template <class Pick>
+void MultibodySystem::reactionOf(Pick take, int marker, const double* y, Eigen::Vector3d& force,
+                                 Eigen::Vector3d& torque) const {
   // Generalised constraint force on the marker's part, computed for the part's own frame even
   // when it is ground (its pose is fixed, but the virtual displacement is well defined).
   force.setZero();
@@ -176,7 +183,7 @@ void MultibodySystem::elementReaction(bool motion, int element, int marker, cons
   const M3<double> am = M3<double>::from(a);
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
     const ConstraintEquation& eq = eqs[k];
-    if (!eq.active || (motion ? eq.motion : eq.joint) != element) continue;
+    if (!eq.active || !take(eq)) continue;
     const int side = eq.iMarker == marker ? 0 : (eq.jMarker == marker ? 1 : -1);
     if (side < 0) continue;
     const double lambda = y[layout_.lambda(k)];
@@ -194,26 +201,63 @@ void MultibodySystem::elementReaction(bool motion, int element, int marker, cons
   torque = a * torque - (pm - origin).cross(force);
 }
 
+std::pair<int, int> MultibodySystem::elementMarkers(ConstraintElement kind, int element) const {
+  switch (kind) {
+    case ConstraintElement::Joint:
+      return {model_->joints[element].iMarker, model_->joints[element].jMarker};
+    case ConstraintElement::Motion:
+      return {model_->motions[element].iMarker, model_->motions[element].jMarker};
+    case ConstraintElement::JPrim:
+      return {model_->jprims[element].iMarker, model_->jprims[element].jMarker};
+  }
+  return {-1, -1};
+}
+
+void MultibodySystem::elementReaction(ConstraintElement kind, int element, int marker,
+                                      const double* y, Eigen::Vector3d& force,
+                                      Eigen::Vector3d& torque) const {
+  reactionOf(
+      [&](const ConstraintEquation& eq) {
+        switch (kind) {
+          case ConstraintElement::Joint: return eq.joint == element;
+          case ConstraintElement::Motion: return eq.motion == element;
+          case ConstraintElement::JPrim: return eq.jprim == element;
+        }
+        return false;
+      },
+      marker, y, force, torque);
+}
+
+void MultibodySystem::constraintReactionBetween(int marker, int other, const double* y,
+                                                Eigen::Vector3d& force,
+                                                Eigen::Vector3d& torque) const {
+  reactionOf(
+      [&](const ConstraintEquation& eq) {
+        return other < 0 || eq.iMarker == other || eq.jMarker == other;
+      },
+      marker, y, force, torque);
+}
+
 void MultibodySystem::sforceAction(int index, bool atJ, double t, const double* y,
                                    Eigen::Vector3d& force, Eigen::Vector3d& torque) const {
-  const model::SForce& f = model_->sforces[index];
-  const double value = sforceValue(index, t, y);
-  const Frame<double> fi = frame(f.iMarker, y);
-  const Frame<double> fj = frame(f.jMarker, y);
-  Eigen::Vector3d onI;
-  const Eigen::Vector3d zj = toEigen(fj.a.c[2]);
-  const Eigen::Vector3d d = toEigen(fi.p - fj.p);
+  forces_.action({ForceElementKind::SForce, index}, atJ, t, y, force, torque);
+}
+
+void MultibodySystem::forceElementsOnMarker(int marker, int other, double t, const double* y,
+                                            Eigen::Vector3d& force,
+                                            Eigen::Vector3d& torque) const {
   force.setZero();
   torque.setZero();
-  if (f.rotation) {
-    onI = zj * value;
-    if (atJ) { if (!f.actionOnly) torque = -onI; }
-    else torque = onI;
-    return;
+  Eigen::Vector3d f, tq;
+  for (const ForceElementRef& e : forces_.elements()) {
+    const int i = forces_.iMarker(e), j = forces_.jMarker(e);
+    const bool atI = i == marker && (other < 0 || j == other);
+    const bool atJ = j == marker && (other < 0 || i == other);
+    if (!atI && !atJ) continue;
+    forces_.action(e, !atI, t, y, f, tq);
+    force += f;
+    torque += tq;
   }
-  onI = f.actionOnly ? Eigen::Vector3d(zj * value) : Eigen::Vector3d(d * (value / d.norm()));
-  if (atJ) { if (!f.actionOnly) force = -onI; }
-  else force = onI;
 }
 
 }  // namespace openmss::mechanics

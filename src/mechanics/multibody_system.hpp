@@ -5,22 +5,20 @@
 // Everything is templated on the scalar; exact Jacobians come from forward-mode AD.
 
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <Eigen/Dense>
 
 #include "common/dual.hpp"
+#include "mechanics/bound_function.hpp"
 #include "mechanics/constraint_set.hpp"
+#include "mechanics/force_elements.hpp"
 #include "mechanics/measures.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
-
-// Expression value on the scalar T: the chain rule through the host measures for duals.
-template <class T>
-T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
-                std::vector<double>& scratchValues, std::vector<double>& scratchGrad);
 
 class MultibodySystem {
  public:
@@ -59,11 +57,31 @@ class MultibodySystem {
   // Force on the part of `marker` and torque about the marker's origin, both in ground,
   // exerted by the equations of element (joint or motion), from the multipliers in y.
   void elementReaction(bool motion, int element, int marker, const double* y,
+                       Eigen::Vector3d& force, Eigen::Vector3d& torque) const {
+    elementReaction(motion ? ConstraintElement::Motion : ConstraintElement::Joint, element,
+                    marker, y, force, torque);
+  }
+  enum class ConstraintElement { Joint, Motion, JPrim };
+  void elementReaction(ConstraintElement kind, int element, int marker, const double* y,
                        Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
+  // The I and J markers of a constraint element.
+  std::pair<int, int> elementMarkers(ConstraintElement kind, int element) const;
+  // Sum of the reactions on `marker` of every constraint equation acting between `marker` and
+  // `other` (any marker when other < 0): joints, joint primitives and motions.
+  void constraintReactionBetween(int marker, int other, const double* y, Eigen::Vector3d& force,
+                                 Eigen::Vector3d& torque) const;
   // Force and torque of SFORCE `index` on the part of `marker` (its I or J marker), in ground,
   // torque about the marker's origin.
   void sforceAction(int index, bool atJ, double t, const double* y, Eigen::Vector3d& force,
                     Eigen::Vector3d& torque) const;
+  // Every applied force element (SFORCE, SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE,
+  // GFORCE): their loads and read-back (mechanics/force_elements.hpp).
+  const ForceElements& forceElements() const { return forces_; }
+  // Sum of the force elements acting on `marker` (as I, or as J / JFLOAT), restricted to those
+  // between `marker` and `other` when other >= 0: force on the marker's part and torque about
+  // the marker's origin, ground axes.
+  void forceElementsOnMarker(int marker, int other, double t, const double* y,
+                             Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
 
  private:
   template <class T>
@@ -82,6 +100,10 @@ class MultibodySystem {
   template <class T>
   T sforceValue(int index, double t, const T* y) const;
   static double wrapDelta(double geometryValue, double target);
+  // The reaction of equations selected by `take(eq)` on `marker`'s part.
+  template <class Pick>
+  void reactionOf(Pick take, int marker, const double* y, Eigen::Vector3d& force,
+                  Eigen::Vector3d& torque) const;
 
   const model::Model* model_;
   StateLayout layout_;
@@ -89,28 +111,13 @@ class MultibodySystem {
   std::vector<double> mass_;               // per body, divided by UCF
   std::vector<Eigen::Matrix3d> inertia_;   // per body, divided by UCF
   mutable std::vector<double> scratchValues_, scratchGrad_;
+  ForceElements forces_;  // applied force elements (one code path for residual and read-back)
+  // Last motion target per motion (VELOCITY/ACCELERATION motions integrate f by quadrature;
+  // the residual asks for the same time many times per Newton matrix).
+  mutable std::vector<std::pair<double, expr::TimeJet>> motionCache_;
 };
 
 // ---- implementation of the templates ----
-
-template <class T>
-T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
-                std::vector<double>& values, std::vector<double>& grad) {
-  const size_t n = b.measures.size();
-  values.resize(n);
-  grad.resize(n);
-  if constexpr (std::is_same_v<T, double>) {
-    return b.expression.evaluate(hostValues, t);
-  } else {
-    for (size_t k = 0; k < n; ++k) values[k] = valueOf(hostValues[k]);
-    double dTime = 0.0;
-    const double v = b.expression.evaluate(values.data(), t, grad.data(), &dTime);
-    T out(v);
-    out.d = 0.0 * hostValues[0].d;  // zero of the right type
-    for (size_t k = 0; k < n; ++k) out.d = out.d + grad[k] * hostValues[k].d;
-    return out;
-  }
-}
 
 template <class T>
 Frame<T> MultibodySystem::frame(int marker, const T* y) const {
@@ -164,61 +171,13 @@ void MultibodySystem::addConstraintForce(const ConstraintEquation& eq, const T* 
 
 template <class T>
 T MultibodySystem::sforceValue(int index, double t, const T* y) const {
-  const model::SForce& f = model_->sforces[index];
-  const size_t n = f.function.measures.size();
-  T host[16];
-  std::vector<T> big;
-  T* hv = host;
-  if (n > 16) {
-    big.resize(n);
-    hv = big.data();
-  }
-  for (size_t k = 0; k < n; ++k) kinematicMeasure(*model_, layout_, f.function.measures[k], y, &hv[k]);
-  if (n == 0) {
-    T zero(0.0);
-    return evaluateBound(f.function, &zero, t, scratchValues_, scratchGrad_);
-  }
-  return evaluateBound(f.function, hv, t, scratchValues_, scratchGrad_);
+  return forces_.sforceValue(index, t, y);
 }
 
+// Every applied force element, SFORCEs first (one code path: force_elements.hpp).
 template <class T>
 void MultibodySystem::addSForces(double t, const T* y, T* g) const {
-  for (int k = 0; k < static_cast<int>(model_->sforces.size()); ++k) {
-    const model::SForce& f = model_->sforces[k];
-    const T value = sforceValue(k, t, y);
-    const Frame<T> fi = frame(f.iMarker, y);
-    const Frame<T> fj = frame(f.jMarker, y);
-    V3<T> onI, onJ;  // force (translation) or torque (rotation) in ground on I and J
-    if (f.rotation) {
-      onI = fj.a.c[2] * value;
-    } else if (f.actionOnly) {
-      onI = fj.a.c[2] * value;
-    } else {
-      const V3<T> d = fi.p - fj.p;
-      onI = d * (value / norm(d));  // positive values push I and J apart
-    }
-    onJ = -onI;
-    for (int side = 0; side < (f.actionOnly ? 1 : 2); ++side) {
-      const int marker = side == 0 ? f.iMarker : f.jMarker;
-      const int body = model_->parts[model_->markers[marker].part].body;
-      if (body < 0) continue;
-      const V3<T>& vec = side == 0 ? onI : onJ;
-      const BodyPose<T> pose = bodyPose(layout_, body, y);
-      T* gv = g + layout_.body(body) + StateLayout::kV;
-      T* gw = g + layout_.body(body) + StateLayout::kW;
-      if (f.rotation) {
-        const V3<T> nb = pose.a.tmul(vec);
-        for (int c = 0; c < 3; ++c) gw[c] = gw[c] - nb[c];
-      } else {
-        const Frame<T>& at = side == 0 ? fi : fj;
-        const V3<T> nb = pose.a.tmul(cross(at.p - pose.r, vec));
-        for (int c = 0; c < 3; ++c) {
-          gv[c] = gv[c] - vec[c];
-          gw[c] = gw[c] - nb[c];
-        }
-      }
-    }
-  }
+  forces_.addToResidual(t, y, g);
 }
 
 template <class T>
@@ -277,7 +236,7 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
     if (eq.motion >= 0) {
       const double target = motionJet(k, t).value;
       value = value - target;
-      if (eq.kind == ConstraintEquation::Kind::MotionRotation)
+      if (ConstraintSet::wrapsAngle(eq))
         value = value - wrapDelta(valueOf(value) + target, target);
     }
     row = value;

@@ -18,9 +18,16 @@ enum class MeasureKind {
   // Angles of i relative to j.
   AX, AY, AZ, PSI, THETA, PHI, YAW, PITCH, ROLL,
   Orient,      // ORIENT(system, component, i, j): code in `code`, component in `component`
+  IncludedAngle,  // INCANG(i, j, k): angle between the lines i->j and j->k (k in `k`)
+  NetForce,    // FX FY FZ FM TX TY TZ TM (i[, j][, k]): `component` 1..8 as for JOINT
   JointForce,  // JOINT(id, jflag, comp, rm)
   MotionForce, // MOTION(id, jflag, comp, rm)
   SForceForce, // SFORCE(id, jflag, comp, rm)
+  JPrimForce,  // JPRIM(id, jflag, comp, rm)
+  // Read-back of the other force elements, same signature as SFORCE; `element` indexes
+  // Model::springDampers, linearFields (BUSH, FIELD, BEAM) or vectorForces (VFORCE...).
+  SpringDamperForce, BushingForce, FieldForce, BeamForce, VForceForce, VTorqueForce,
+  GForceForce,
 };
 
 struct Measure {
@@ -40,6 +47,12 @@ struct Measure {
       case MeasureKind::ACCM: case MeasureKind::WDTX: case MeasureKind::WDTY:
       case MeasureKind::WDTZ: case MeasureKind::WDTM: case MeasureKind::JointForce:
       case MeasureKind::MotionForce: case MeasureKind::SForceForce:
+      case MeasureKind::JPrimForce:
+      case MeasureKind::SpringDamperForce: case MeasureKind::BushingForce:
+      case MeasureKind::FieldForce: case MeasureKind::BeamForce:
+      case MeasureKind::VForceForce: case MeasureKind::VTorqueForce:
+      case MeasureKind::GForceForce:
+      case MeasureKind::NetForce:
         return true;
       default:
         return false;

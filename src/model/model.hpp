@@ -13,6 +13,7 @@
 
 #include "common/source_location.hpp"
 #include "expr/expression.hpp"
+#include "model/analysis_settings.hpp"
 #include "model/measure.hpp"
 
 namespace openmss::model {
@@ -36,6 +37,9 @@ struct Part {
   // Initial velocities as given: translational in ground axes, angular in CM-marker axes.
   std::array<std::optional<double>, 3> velocity;
   std::array<std::optional<double>, 3> angularVelocity;
+  // EXACT=X:Y:Z:PSI:THETA:PHI: coordinates (CM position in ground, 3-1-3 angles of the body
+  // frame) the position initial conditions hold (heavily weighted, docs/theory.md §7).
+  std::array<bool, 6> exact{};
   int body = -1;  // index of the moving body in the state (-1 for ground)
   SourceLocation where;
 };
@@ -46,10 +50,16 @@ struct Marker {
   // Pose in the part's body frame (origin at the CM, CM-marker axes).
   Eigen::Vector3d position = Eigen::Vector3d::Zero();
   Eigen::Matrix3d orientation = Eigen::Matrix3d::Identity();
+  // FLOATING: a marker without a fixed pose on its part. Only the JFLOAT of VFORCE, VTORQUE
+  // and GFORCE may name one (the reaction goes to its part at the I marker's location).
+  bool floating = false;
   SourceLocation where;
 };
 
-enum class JointType { Revolute, Spherical, Universal, Hooke, Translational, Cylindrical, Fixed };
+enum class JointType {
+  Revolute, Spherical, Universal, Hooke, Translational, Cylindrical, Fixed,
+  Convel, Planar, RackPin, Screw
+};
 const char* jointTypeName(JointType t);
 
 struct Joint {
@@ -57,14 +67,41 @@ struct Joint {
   JointType type = JointType::Revolute;
   int iMarker = -1;
   int jMarker = -1;
+  double pitchDiameter = 0.0;  // RACKPIN PD
+  double pitch = 0.0;          // SCREW PITCH (travel per turn)
+  // Joint initial conditions (IC on revolute/translational, ICTRAN/ICROT on cylindrical):
+  // displacement and velocity of I relative to J, held during the initial-condition analysis.
+  std::optional<double> icTranslation, icTranslationVelocity, icRotation, icRotationVelocity;
+  SourceLocation where;
+};
+
+// JPRIM: a joint primitive, constraint equations between two markers (docs/theory.md §5).
+enum class JPrimType { AtPoint, InLine, InPlane, Orientation, ParallelAxes, Perpendicular };
+const char* jprimTypeName(JPrimType t);
+
+struct JPrim {
+  long id = 0;
+  JPrimType type = JPrimType::AtPoint;
+  int iMarker = -1;
+  int jMarker = -1;
   SourceLocation where;
 };
 
 struct Motion {
+  enum class Form { Displacement, Velocity, Acceleration };
   long id = 0;
-  int joint = -1;
-  bool rotation = true;  // rotational (revolute, cylindrical ROTATION) or translational
-  expr::Expression function;  // displacement as a function of TIME
+  int joint = -1;        // JOINT= motion, or -1 for a marker-pair (I=, J=) motion
+  bool rotation = true;  // rotational (revolute, cylindrical ROTATION, B1-B3) or translational
+  // Markers the motion acts between (the joint's for a JOINT= motion).
+  int iMarker = -1;
+  int jMarker = -1;
+  // Marker-pair motions: 0-2 = X, Y, Z (DX/DY/DZ of I rel J in J axes), 3-5 = B1, B2, B3
+  // (body 1-2-3 angles of I rel J). Joint motions: 2 (translation) or 5 (rotation about zJ).
+  int axis = 2;
+  Form form = Form::Displacement;
+  double icDisp = 0.0;  // VELOCITY and ACCELERATION: displacement at TIME = 0
+  double icVel = 0.0;   // ACCELERATION: velocity at TIME = 0
+  expr::Expression function;  // displacement, velocity or acceleration as a function of TIME
   SourceLocation where;
 };
 
@@ -81,6 +118,50 @@ struct SForce {
   bool rotation = false;
   bool actionOnly = false;
   BoundExpression function;
+  SourceLocation where;
+};
+
+// ---- Force elements beyond SFORCE (docs/theory.md §6; mechanics/force_elements.hpp) ----
+
+// SPRINGDAMPER: translational (K, C, LENGTH, FORCE) or rotational (KT, CT, ANGLE, TORQUE).
+// Both read as stiffness, damping, free length or angle, and preload at that length or angle.
+struct SpringDamper {
+  long id = 0;
+  int iMarker = -1;
+  int jMarker = -1;
+  bool rotational = false;
+  double stiffness = 0.0;
+  double damping = 0.0;
+  double freeValue = 0.0;  // LENGTH or ANGLE (radians)
+  double preload = 0.0;    // FORCE or TORQUE
+  SourceLocation where;
+};
+
+// BUSHING, FIELD and BEAM share one law: {F; T} = -K (q - reference) - C q' + preload on the I
+// marker, components in J axes, q = (x, y, z, a, b, c) of I relative to J (theory.md §6).
+struct LinearField {
+  enum class Kind { Bushing, Field, Beam };
+  long id = 0;
+  Kind kind = Kind::Field;
+  int iMarker = -1;
+  int jMarker = -1;
+  Eigen::Matrix<double, 6, 6> stiffness = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 6> damping = Eigen::Matrix<double, 6, 6>::Zero();
+  Eigen::Matrix<double, 6, 1> reference = Eigen::Matrix<double, 6, 1>::Zero();
+  Eigen::Matrix<double, 6, 1> preload = Eigen::Matrix<double, 6, 1>::Zero();
+  SourceLocation where;
+};
+
+// VFORCE (force), VTORQUE (torque), GFORCE (both): components in RM axes acting at I; the
+// reaction acts on the part of the floating marker JFLOAT at I's location.
+struct VectorForce {
+  enum class Kind { VForce, VTorque, GForce };
+  long id = 0;
+  Kind kind = Kind::VForce;
+  int iMarker = -1;
+  int jFloat = -1;
+  int rmMarker = -1;
+  std::array<std::optional<BoundExpression>, 6> components;  // FX FY FZ TX TY TZ; unset = 0
   SourceLocation where;
 };
 
@@ -111,13 +192,20 @@ struct Model {
   std::vector<Marker> markers;
   std::vector<Joint> joints;
   std::vector<Motion> motions;
+  std::vector<JPrim> jprims;
   std::vector<SForce> sforces;
+  std::vector<SpringDamper> springDampers;
+  std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM
+  std::vector<VectorForce> vectorForces;  // VFORCE, VTORQUE, GFORCE
   std::vector<Request> requests;
   OutputSettings output;
+  EquilibriumSettings equilibrium;            // EQUILIBRIUM statement (and command)
+  InitialConditionSettings initialConditions;  // IC statement (and command)
   std::vector<int> movingParts;  // part index of each moving body, in state order
   int groundPart = -1;
 
   std::map<long, int> partIndex, markerIndex, jointIndex;
+  std::map<long, int> jprimIndex;
 
   int bodyCount() const { return static_cast<int>(movingParts.size()); }
 };

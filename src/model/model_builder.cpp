@@ -6,6 +6,7 @@
 
 #include "common/rotation.hpp"
 #include "language/schema.hpp"
+#include "model/force_element_builder.hpp"
 #include "model/units_table.hpp"
 
 namespace openmss::model {
@@ -128,7 +129,11 @@ struct RawMarker {
 const std::set<std::string>& supportedStatements() {
   static const std::set<std::string> s = {"UNITS",  "PART",     "MARKER",  "JOINT",
                                           "MOTION", "SFORCE",   "ACCGRAV", "REQUEST",
-                                          "GRAPHICS", "OUTPUT", "END",     "TITLE"};
+                                          "GRAPHICS", "OUTPUT", "END",     "TITLE",
+                                          "EQUILIBRIUM", "IC", "JPRIM",
+                                          // force elements (force_element_builder.cpp)
+                                          "SPRINGDAMPER", "BUSHING", "FIELD", "BEAM",
+                                          "VFORCE", "VTORQUE", "GFORCE"};
   return s;
 }
 
@@ -155,6 +160,11 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       if (it == model.markerIndex.end()) {
         fail("marker " + std::to_string(idv) + " does not exist",
              "Use the id of a MARKER statement of this data set.");
+        return -2;
+      }
+      if (model.markers[it->second].floating) {
+        fail("marker " + std::to_string(idv) + " is FLOATING and has no pose of its own",
+             "Measure a fixed marker.");
         return -2;
       }
       return it->second;
@@ -195,15 +205,34 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       m.component = call.args.size() > 1 ? static_cast<int>(call.args[1]) : 0;
       m.i = marker(2, false);
       m.j = marker(3, true);
-      const bool known = m.code == 27 && m.component >= 1 && m.component <= 4;
+      const bool known = (m.code == 27 && m.component >= 1 && m.component <= 4) ||
+                         (m.code >= 1 && m.code <= 10 && m.component >= 1 && m.component <= 3);
       if (!known)
         fail("orientation code " + std::to_string(m.code) + " component " +
                  std::to_string(m.component) + " is not supported yet",
-             "Use code 27 (Euler parameters, components 1-4).");
-    } else if (call.name == "JOINT" || call.name == "MOTION" || call.name == "SFORCE") {
-      m.kind = call.name == "JOINT" ? MeasureKind::JointForce
+             "Use codes 1-10 (body-fixed sequences 1-2-3, 2-3-1, 3-1-2, 1-3-2, 2-1-3, 3-2-1, "
+             "1-2-1, 1-3-1, 2-1-2, 2-3-2; components 1-3) or 27 (Euler parameters, 1-4).");
+    } else if (call.name == "INCANG") {
+      m.kind = MeasureKind::IncludedAngle;
+      m.i = marker(0, false);
+      m.j = marker(1, false);
+      m.k = marker(2, false);
+    } else if (call.name.size() == 2 && (call.name[0] == 'F' || call.name[0] == 'T') &&
+               std::string("XYZM").find(call.name[1]) != std::string::npos) {
+      // FX FY FZ FM TX TY TZ TM (i[, j][, k]): the net force or torque on marker i.
+      m.kind = MeasureKind::NetForce;
+      const int axis = static_cast<int>(std::string("XYZM").find(call.name[1]));
+      m.component = call.name[0] == 'F' ? (axis == 3 ? 1 : 2 + axis) : (axis == 3 ? 5 : 6 + axis);
+      m.i = marker(0, false);
+      m.j = marker(1, true);
+      m.k = marker(2, true);
+    } else if (call.name == "JOINT" || call.name == "MOTION" || call.name == "SFORCE" ||
+               call.name == "JPRIM" || forceElementReadBack(call.name, nullptr)) {
+      m.kind = forceElementReadBack(call.name, &m.kind) ? m.kind
+               : call.name == "JOINT"  ? MeasureKind::JointForce
                : call.name == "MOTION" ? MeasureKind::MotionForce
-                                        : MeasureKind::SForceForce;
+               : call.name == "JPRIM"  ? MeasureKind::JPrimForce
+                                       : MeasureKind::SForceForce;
       long eid = call.args.size() > 0 ? call.args[0] : 0;
       m.atJ = call.args.size() > 1 ? static_cast<int>(call.args[1]) : 0;
       m.component = call.args.size() > 2 ? static_cast<int>(call.args[2]) : 0;
@@ -211,9 +240,13 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       int found = -1;
       if (m.kind == MeasureKind::JointForce) {
         if (auto ji = model.jointIndex.find(eid); ji != model.jointIndex.end()) found = ji->second;
+      } else if (m.kind == MeasureKind::JPrimForce) {
+        if (auto pi = model.jprimIndex.find(eid); pi != model.jprimIndex.end()) found = pi->second;
       } else if (m.kind == MeasureKind::MotionForce) {
         for (size_t q = 0; q < model.motions.size(); ++q)
           if (model.motions[q].id == eid) found = static_cast<int>(q);
+      } else if (forceElementReadBack(call.name, nullptr)) {
+        found = findForceElement(model, m.kind, eid);
       } else {
         for (size_t q = 0; q < model.sforces.size(); ++q)
           if (model.sforces[q].id == eid) found = static_cast<int>(q);
@@ -248,6 +281,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   std::vector<RawPart> rawParts;
   std::vector<RawMarker> rawMarkers;
   std::vector<const Statement*> joints, motions, sforces, requests;
+  std::vector<const Statement*> jprimStatements;
+  std::vector<const Statement*> forceElementStatements;  // SPRINGDAMPER ... GFORCE
   long lastPartId = 0;
 
   for (const Statement& s : dataset.statements) {
@@ -279,7 +314,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
             for (int k = 0; k < 3; ++k) p.products(k) = ip->values[3 + k].number;
         }
       }
-      for (const char* unsupported : {"VM", "WM", "EXACT", "IM"}) {
+      for (const char* unsupported : {"VM", "WM", "IM"}) {
         if (a.has(unsupported) && std::string(unsupported) != "IM")
           diags.error(s.find(unsupported)->where, s.subject(),
                       std::string(unsupported) + " is not supported yet",
@@ -298,7 +333,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
         a.require("PART", "<part id>");
         continue;
       }
-      for (const char* unsupported : {"FLOATING", "POINT_MASS", "FLEX_BODY", "NODE", "FE_PART",
+      // FLOATING markers are read; only a JFLOAT argument may name one (markerRef below).
+      for (const char* unsupported : {"POINT_MASS", "FLEX_BODY", "NODE", "FE_PART",
                                       "NODE_LABEL", "USEXP"})
         if (a.has(unsupported))
           diags.error(s.find(unsupported)->where, s.subject(),
@@ -312,10 +348,18 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
       joints.push_back(&s);
     } else if (s.name == "MOTION") {
       motions.push_back(&s);
+    } else if (s.name == "JPRIM") {
+      jprimStatements.push_back(&s);
     } else if (s.name == "SFORCE") {
       sforces.push_back(&s);
+    } else if (isForceElementStatement(s.name)) {
+      forceElementStatements.push_back(&s);
     } else if (s.name == "REQUEST") {
       requests.push_back(&s);
+    } else if (s.name == "EQUILIBRIUM") {
+      applyEquilibriumArguments(s, model.equilibrium, diags);
+    } else if (s.name == "IC") {
+      applyInitialConditionArguments(s, model.initialConditions, diags);
     } else if (s.name == "ACCGRAV") {
       model.gravity = Eigen::Vector3d(a.real("IGRAV").value_or(0.0), a.real("JGRAV").value_or(0.0),
                                       a.real("KGRAV").value_or(0.0));
@@ -353,6 +397,13 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
       for (int k = 0; k < 3; ++k) {
         if (auto x = a.real(v[k])) p.velocity[k] = *x;
         if (auto x = a.real(w[k])) p.angularVelocity[k] = *x;
+      }
+      // EXACT=X:Y:Z:PSI:THETA:PHI (the reader checked the words).
+      if (const Argument* exact = rp.s->find("EXACT")) {
+        static const char* kCoordinates[6] = {"X", "Y", "Z", "PSI", "THETA", "PHI"};
+        for (const auto& value : exact->values)
+          for (int k = 0; k < 6; ++k)
+            if (value.text == kCoordinates[k]) p.exact[k] = true;
       }
     }
     rawPartIndex[p.id] = model.parts.size();
@@ -479,6 +530,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     const Part& p = model.parts[m.part];
     m.position = p.orientation.transpose() * (markerPos[mid] - p.position);
     m.orientation = p.orientation.transpose() * markerRot[mid];
+    m.floating = rm.s->has("FLOATING");
     model.markerIndex[mid] = static_cast<int>(model.markers.size());
     model.markers.push_back(m);
   }
@@ -498,12 +550,21 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
                   "Use the id of a MARKER statement of this data set.");
       return -1;
     }
+    if (model.markers[it->second].floating) {
+      diags.error(s.find(name)->where, s.subject(),
+                  std::string(name) + "=" + std::to_string(*idv) + ": marker " +
+                      std::to_string(*idv) + " is FLOATING; only JFLOAT of VFORCE, VTORQUE "
+                      "and GFORCE may name a floating marker",
+                  "Use a fixed marker (without FLOATING).");
+      return -1;
+    }
     return it->second;
   };
 
   // Joints.
   for (const Statement* s : joints) {
     if (!s->id) continue;
+    Args a(*s, diags);
     Joint j;
     j.id = *s->id;
     j.where = s->where;
@@ -511,31 +572,87 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
         {"REVOLUTE", JointType::Revolute},       {"SPHERICAL", JointType::Spherical},
         {"UNIVERSAL", JointType::Universal},     {"HOOKE", JointType::Hooke},
         {"TRANSLATIONAL", JointType::Translational}, {"CYLINDRICAL", JointType::Cylindrical},
-        {"FIXED", JointType::Fixed}};
+        {"FIXED", JointType::Fixed},             {"CONVEL", JointType::Convel},
+        {"PLANAR", JointType::Planar},           {"RACKPIN", JointType::RackPin},
+        {"SCREW", JointType::Screw}};
     int nTypes = 0;
     for (const auto& [name, type] : types)
       if (s->has(name)) { j.type = type; ++nTypes; }
-    for (const char* other : {"CONVEL", "PLANAR", "RACKPIN", "SCREW"})
-      if (s->has(other)) {
-        diags.error(s->where, s->subject(), std::string(other) + " joints are not supported yet",
-                    "Supported joint types: REVOLUTE, SPHERICAL, UNIVERSAL, HOOKE, "
-                    "TRANSLATIONAL, CYLINDRICAL, FIXED.");
-        nTypes = -100;
-      }
     if (nTypes == 0)
       diags.error(s->where, s->subject(), "the joint type is missing",
-                  "Add one of REVOLUTE, SPHERICAL, UNIVERSAL, HOOKE, TRANSLATIONAL, "
-                  "CYLINDRICAL, FIXED.");
+                  "Add one of CONVEL, CYLINDRICAL, FIXED, HOOKE, PLANAR, RACKPIN, REVOLUTE, "
+                  "SCREW, SPHERICAL, TRANSLATIONAL, UNIVERSAL.");
     else if (nTypes > 1)
       diags.error(s->where, s->subject(), "more than one joint type is given",
                   "Keep exactly one joint type.");
     j.iMarker = markerRef(*s, "I");
     j.jMarker = markerRef(*s, "J");
-    for (const char* ic : {"IC", "ICTRAN", "ICROT"})
-      if (s->has(ic))
-        diags.error(s->find(ic)->where, s->subject(),
-                    std::string(ic) + ": joint initial conditions are not supported yet",
-                    "Remove it and set the initial configuration with the markers.");
+    // PD (rack-and-pinion) and PITCH (screw) belong to their joint type and are required there.
+    const bool rackPin = nTypes == 1 && j.type == JointType::RackPin;
+    const bool screw = nTypes == 1 && j.type == JointType::Screw;
+    if (rackPin) {
+      a.require("PD", "<pitch diameter of the pinion>");
+      j.pitchDiameter = a.real("PD").value_or(0.0);
+      if (s->has("PD") && !(j.pitchDiameter > 0.0)) {
+        diags.error(s->find("PD")->where, s->subject(), "PD must be positive",
+                    "Give the pinion's pitch diameter, PD=<value> > 0.");
+        nTypes = -1;
+      }
+    } else if (s->has("PD")) {
+      diags.error(s->find("PD")->where, s->subject(), "PD applies to RACKPIN joints only",
+                  "Remove PD.");
+    }
+    if (screw) {
+      a.require("PITCH", "<travel per turn>");
+      j.pitch = a.real("PITCH").value_or(0.0);
+      if (s->has("PITCH") && j.pitch == 0.0) {
+        diags.error(s->find("PITCH")->where, s->subject(), "PITCH must not be zero",
+                    "Give the translation per turn, PITCH=<value> (negative: left-handed).");
+        nTypes = -1;
+      }
+    } else if (s->has("PITCH")) {
+      diags.error(s->find("PITCH")->where, s->subject(), "PITCH applies to SCREW joints only",
+                  "Remove PITCH.");
+    }
+    if ((rackPin && !s->has("PD")) || (screw && !s->has("PITCH"))) nTypes = -1;
+    // Joint initial conditions: IC on revolute (rotation) and translational (translation)
+    // joints, ICTRAN and ICROT on cylindrical joints; displacement [, velocity].
+    auto icPair = [&](const char* name, std::optional<double>& disp, std::optional<double>& vel) {
+      const Argument* ic = s->find(name);
+      if (!ic) return;
+      if (ic->values.size() >= 1) disp = ic->values[0].number;
+      if (ic->values.size() >= 2) vel = ic->values[1].number;
+    };
+    if (nTypes == 1) {
+      const bool icAllowed = j.type == JointType::Revolute || j.type == JointType::Translational;
+      if (s->has("IC") && !icAllowed)
+        diags.error(s->find("IC")->where, s->subject(),
+                    std::string("IC applies to revolute and translational joints; this joint is ") +
+                        jointTypeName(j.type),
+                    j.type == JointType::Cylindrical ? "Use ICTRAN= and ICROT= on a cylindrical joint."
+                                                     : "Remove IC.");
+      for (const char* name : {"ICTRAN", "ICROT"})
+        if (s->has(name) && j.type != JointType::Cylindrical)
+          diags.error(s->find(name)->where, s->subject(),
+                      std::string(name) + " applies to cylindrical joints only",
+                      j.type == JointType::Revolute || j.type == JointType::Translational
+                          ? "Use IC= on a revolute or translational joint."
+                          : "Remove it.");
+      if (j.type == JointType::Revolute) icPair("IC", j.icRotation, j.icRotationVelocity);
+      if (j.type == JointType::Translational)
+        icPair("IC", j.icTranslation, j.icTranslationVelocity);
+      if (j.type == JointType::Cylindrical) {
+        icPair("ICTRAN", j.icTranslation, j.icTranslationVelocity);
+        icPair("ICROT", j.icRotation, j.icRotationVelocity);
+      }
+      // Read and checked above, but the initial-condition analysis does not hold them yet.
+      for (const char* ic : {"IC", "ICTRAN", "ICROT"})
+        if (s->has(ic))
+          diags.error(s->find(ic)->where, s->subject(),
+                      std::string(ic) + ": joint initial conditions are not supported yet",
+                      "Remove it and set the initial configuration with the markers (and the "
+                      "initial velocity with the parts' VX..WZ).");
+    }
     if (j.iMarker >= 0 && j.jMarker >= 0 &&
         model.markers[j.iMarker].part == model.markers[j.jMarker].part)
       diags.error(s->where, s->subject(),
@@ -548,6 +665,41 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     }
   }
 
+  // Joint primitives.
+  for (const Statement* s : jprimStatements) {
+    if (!s->id) continue;
+    JPrim p;
+    p.id = *s->id;
+    p.where = s->where;
+    static const std::pair<const char*, JPrimType> types[] = {
+        {"ATPOINT", JPrimType::AtPoint},         {"INLINE", JPrimType::InLine},
+        {"INPLANE", JPrimType::InPlane},         {"ORIENTATION", JPrimType::Orientation},
+        {"PARALLEL_AXES", JPrimType::ParallelAxes}, {"PERPENDICULAR", JPrimType::Perpendicular}};
+    int nTypes = 0;
+    for (const auto& [name, type] : types)
+      if (s->has(name)) { p.type = type; ++nTypes; }
+    if (nTypes != 1)
+      diags.error(s->where, s->subject(),
+                  nTypes == 0 ? "the joint primitive type is missing"
+                              : "more than one joint primitive type is given",
+                  "Give exactly one of ATPOINT, INLINE, INPLANE, ORIENTATION, PARALLEL_AXES, "
+                  "PERPENDICULAR.");
+    p.iMarker = markerRef(*s, "I");
+    p.jMarker = markerRef(*s, "J");
+    if (p.iMarker >= 0 && p.jMarker >= 0 &&
+        model.markers[p.iMarker].part == model.markers[p.jMarker].part) {
+      diags.error(s->where, s->subject(),
+                  "I and J markers are on the same part (PART/" +
+                      std::to_string(model.parts[model.markers[p.iMarker].part].id) + ")",
+                  "A joint primitive connects two parts: put I and J on different parts.");
+      continue;
+    }
+    if (nTypes == 1 && p.iMarker >= 0 && p.jMarker >= 0) {
+      model.jprimIndex[p.id] = static_cast<int>(model.jprims.size());
+      model.jprims.push_back(p);
+    }
+  }
+
   // Motions.
   for (const Statement* s : motions) {
     if (!s->id) continue;
@@ -555,46 +707,103 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     Motion m;
     m.id = *s->id;
     m.where = s->where;
-    if (s->has("I") || s->has("J")) {
-      diags.error(s->where, s->subject(), "MOTION on a marker pair (I=, J=) is not supported yet",
-                  "Drive a joint with JOINT=<id>.");
+    int nForms = 0;
+    for (const auto& [name, form] :
+         {std::pair{"DISPLACEMENT", Motion::Form::Displacement},
+          std::pair{"VELOCITY", Motion::Form::Velocity},
+          std::pair{"ACCELERATION", Motion::Form::Acceleration}})
+      if (s->has(name)) { m.form = form; ++nForms; }
+    if (nForms > 1) {
+      diags.error(s->where, s->subject(), "DISPLACEMENT, VELOCITY and ACCELERATION exclude each other",
+                  "Keep one of them (DISPLACEMENT is the default).");
       continue;
     }
-    for (const char* kind : {"VELOCITY", "ACCELERATION", "ICDISP", "ICVEL"})
-      if (s->has(kind))
-        diags.error(s->find(kind)->where, s->subject(),
-                    std::string(kind) + " motions are not supported yet",
-                    "Give the motion as a displacement function of TIME.");
-    auto jid = a.id("JOINT");
-    if (!jid) {
-      if (!s->has("JOINT")) a.require("JOINT", "<joint id>");
+    // ADAMS reads these on every motion; they only matter where the function is integrated.
+    if (s->has("ICDISP") && m.form == Motion::Form::Displacement)
+      diags.warning(s->find("ICDISP")->where, s->subject(),
+                    "ICDISP has no effect on a displacement motion (its function gives the "
+                    "displacement)",
+                    "Remove ICDISP, or make the motion VELOCITY or ACCELERATION.");
+    if (s->has("ICVEL") && m.form != Motion::Form::Acceleration)
+      diags.warning(s->find("ICVEL")->where, s->subject(),
+                    "ICVEL has no effect unless the motion is ACCELERATION",
+                    "Remove ICVEL, or make the motion ACCELERATION.");
+    m.icDisp = a.real("ICDISP").value_or(0.0);
+    m.icVel = a.real("ICVEL").value_or(0.0);
+    const bool onJoint = s->has("JOINT");
+    if (onJoint == (s->has("I") || s->has("J"))) {
+      diags.error(s->where, s->subject(),
+                  onJoint ? "JOINT= excludes I= and J=" : "the motion names no joint and no markers",
+                  "Give JOINT=<id> (with TRANSLATION or ROTATION on a cylindrical joint), or "
+                  "I=<id>, J=<id> with one of X, Y, Z, B1, B2, B3.");
       continue;
     }
-    auto it = model.jointIndex.find(*jid);
-    if (it == model.jointIndex.end()) {
-      diags.error(s->find("JOINT")->where, s->subject(),
-                  "JOINT/" + std::to_string(*jid) + " does not exist (or is invalid)",
-                  "Use the id of a JOINT statement of this data set.");
-      continue;
-    }
-    m.joint = it->second;
-    JointType jt = model.joints[m.joint].type;
-    if (jt == JointType::Revolute) m.rotation = true;
-    else if (jt == JointType::Translational) m.rotation = false;
-    else if (jt == JointType::Cylindrical) {
-      if (s->has("TRANSLATION") == s->has("ROTATION")) {
-        diags.error(s->where, s->subject(),
-                    "a motion on a cylindrical joint needs exactly one of TRANSLATION, ROTATION",
-                    "Add TRANSLATION or ROTATION.");
+    if (onJoint) {
+      for (const char* axis : {"X", "Y", "Z", "B1", "B2", "B3"})
+        if (s->has(axis))
+          diags.error(s->find(axis)->where, s->subject(),
+                      std::string(axis) + " applies to marker-pair (I=, J=) motions only",
+                      "Remove it; a joint motion acts along or about the joint's z axis.");
+      auto jid = a.id("JOINT");
+      if (!jid) continue;
+      auto it = model.jointIndex.find(*jid);
+      if (it == model.jointIndex.end()) {
+        diags.error(s->find("JOINT")->where, s->subject(),
+                    "JOINT/" + std::to_string(*jid) + " does not exist (or is invalid)",
+                    "Use the id of a JOINT statement of this data set.");
         continue;
       }
-      m.rotation = s->has("ROTATION");
+      m.joint = it->second;
+      const Joint& joint = model.joints[m.joint];
+      m.iMarker = joint.iMarker;
+      m.jMarker = joint.jMarker;
+      JointType jt = joint.type;
+      if (jt == JointType::Revolute) m.rotation = true;
+      else if (jt == JointType::Translational) m.rotation = false;
+      else if (jt == JointType::Cylindrical) {
+        if (s->has("TRANSLATION") == s->has("ROTATION")) {
+          diags.error(s->where, s->subject(),
+                      "a motion on a cylindrical joint needs exactly one of TRANSLATION, ROTATION",
+                      "Add TRANSLATION or ROTATION.");
+          continue;
+        }
+        m.rotation = s->has("ROTATION");
+      } else {
+        diags.error(s->where, s->subject(),
+                    std::string("a joint motion needs a revolute, translational or cylindrical "
+                                "joint; JOINT/") + std::to_string(*jid) + " is " + jointTypeName(jt),
+                    "Drive a revolute, translational or cylindrical joint, or use I=, J= with "
+                    "X, Y, Z, B1, B2 or B3.");
+        continue;
+      }
+      m.axis = m.rotation ? 5 : 2;
     } else {
-      diags.error(s->where, s->subject(),
-                  std::string("a joint motion needs a revolute, translational or cylindrical "
-                              "joint; JOINT/") + std::to_string(*jid) + " is " + jointTypeName(jt),
-                  "Drive a revolute, translational or cylindrical joint.");
-      continue;
+      m.iMarker = markerRef(*s, "I");
+      m.jMarker = markerRef(*s, "J");
+      int nAxes = 0;
+      static const char* kAxes[6] = {"X", "Y", "Z", "B1", "B2", "B3"};
+      for (int k = 0; k < 6; ++k)
+        if (s->has(kAxes[k])) { m.axis = k; ++nAxes; }
+      if (nAxes != 1) {
+        diags.error(s->where, s->subject(),
+                    nAxes == 0 ? "a marker-pair motion needs its direction"
+                               : "more than one direction is given",
+                    "Give exactly one of X, Y, Z (translation of I in J's axes) or B1, B2, B3 "
+                    "(body 1-2-3 rotation angles of I relative to J).");
+        continue;
+      }
+      for (const char* jointOnly : {"TRANSLATION", "ROTATION"})
+        if (s->has(jointOnly))
+          diags.error(s->find(jointOnly)->where, s->subject(),
+                      std::string(jointOnly) + " applies to joint motions only",
+                      "Remove it; X, Y, Z, B1, B2 or B3 gives the direction.");
+      if (m.iMarker < 0 || m.jMarker < 0) continue;
+      if (model.markers[m.iMarker].part == model.markers[m.jMarker].part) {
+        diags.error(s->where, s->subject(), "I and J markers are on the same part",
+                    "A motion acts between two parts: put I and J on different parts.");
+        continue;
+      }
+      m.rotation = m.axis >= 3;
     }
     const Argument* f = s->find("FUNCTION");
     if (!f) {
@@ -640,6 +849,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     if (f.iMarker < 0 || f.jMarker < 0) continue;
     model.sforces.push_back(std::move(f));
   }
+  // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
+  buildForceElements(forceElementStatements, model, markerRef, diags);
   // Bind SFORCE functions after every SFORCE exists (a function may read another SFORCE).
   {
     size_t k = 0;
@@ -656,6 +867,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
       ++k;
     }
   }
+
+  bindForceElementFunctions(forceElementStatements, model, diags);
 
   // Requests.
   for (const Statement* s : requests) {

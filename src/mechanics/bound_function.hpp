@@ -1,0 +1,56 @@
+#pragma once
+// Values of bound function expressions (FUNCTION=, FX=, ...) on the state, templated on the
+// scalar: for dual numbers the derivative is chained through the expression's exact partial
+// derivatives with respect to the measures it reads (DM, VR, ...).
+
+#include <type_traits>
+#include <vector>
+
+#include "common/dual.hpp"
+#include "mechanics/measures.hpp"
+#include "model/model.hpp"
+
+namespace openmss::mechanics {
+
+// Expression value on the scalar T: the chain rule through the host measures for duals.
+template <class T>
+T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
+                std::vector<double>& values, std::vector<double>& grad) {
+  const size_t n = b.measures.size();
+  values.resize(n);
+  grad.resize(n);
+  if constexpr (std::is_same_v<T, double>) {
+    return b.expression.evaluate(hostValues, t);
+  } else {
+    for (size_t k = 0; k < n; ++k) values[k] = valueOf(hostValues[k]);
+    double dTime = 0.0;
+    const double v = b.expression.evaluate(values.data(), t, grad.data(), &dTime);
+    T out(v);
+    out.d = 0.0 * hostValues[0].d;  // zero of the right type
+    for (size_t k = 0; k < n; ++k) out.d = out.d + grad[k] * hostValues[k].d;
+    return out;
+  }
+}
+
+// The function's value at state y: its measures evaluated on T, then the expression.
+template <class T>
+T evaluateFunction(const model::Model& m, const StateLayout& l, const model::BoundExpression& f,
+                   double t, const T* y, std::vector<double>& scratchValues,
+                   std::vector<double>& scratchGrad) {
+  const size_t n = f.measures.size();
+  T host[16];
+  std::vector<T> big;
+  T* hv = host;
+  if (n > 16) {
+    big.resize(n);
+    hv = big.data();
+  }
+  for (size_t k = 0; k < n; ++k) kinematicMeasure(m, l, f.measures[k], y, &hv[k]);
+  if (n == 0) {
+    T zero(0.0);
+    return evaluateBound(f, &zero, t, scratchValues, scratchGrad);
+  }
+  return evaluateBound(f, hv, t, scratchValues, scratchGrad);
+}
+
+}  // namespace openmss::mechanics

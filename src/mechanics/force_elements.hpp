@@ -1,0 +1,297 @@
+#pragma once
+// Applied force elements: SFORCE, SPRINGDAMPER, BUSHING / FIELD / BEAM (one linear law) and
+// VFORCE / VTORQUE / GFORCE (docs/theory.md §6). Each element computes, templated on the
+// scalar, the force and torque it applies to the part of its I marker and the reaction on the
+// part of its J (or JFLOAT) marker, from the marker frames and velocities. The residual
+// subtracts them from the Newton-Euler rows, so the Newton matrix, formed on dual numbers, holds
+// their exact derivatives; the read-back functions (SFORCE, SPDP, BUSH, ...) use the same code.
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "mechanics/bound_function.hpp"
+#include "mechanics/pose.hpp"
+#include "mechanics/state_layout.hpp"
+#include "model/model.hpp"
+
+namespace openmss::mechanics {
+
+enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce };
+
+// One element: its kind and its index in the Model's vector of that kind.
+struct ForceElementRef {
+  ForceElementKind kind = ForceElementKind::SForce;
+  int index = -1;
+};
+
+// What one element applies, in ground axes.
+template <class T>
+struct ElementLoads {
+  // On the I marker's part: a force through the I origin and a torque.
+  V3<T> force, torque;
+  bool hasForce = false, hasTorque = false;
+  // On the part of reactionMarker (J, or the JFLOAT marker), unless action-only: a force through
+  // reactionPoint and a torque.
+  int reactionMarker = -1;
+  V3<T> reactionForce, reactionTorque, reactionPoint;
+};
+
+class ForceElements {
+ public:
+  // Takes the angle references of rotational SPRINGDAMPERs from the data set's configuration.
+  explicit ForceElements(const model::Model& model);
+
+  // Every element in the order the residual applies them (SFORCEs first, in data-set order).
+  const std::vector<ForceElementRef>& elements() const { return elements_; }
+
+  template <class T>
+  ElementLoads<T> loads(ForceElementRef e, double t, const T* y) const;
+
+  // Subtracts every element's generalised force from the Newton-Euler rows of g.
+  template <class T>
+  void addToResidual(double t, const T* y, T* g) const;
+
+  // Force and torque of element e on the part of its I marker (atJ false) or of its J / JFLOAT
+  // marker (atJ true), in ground; the torque is about that marker's origin (a JFLOAT marker
+  // sits at I). Zero at J for action-only elements.
+  void action(ForceElementRef e, bool atJ, double t, const double* y, Eigen::Vector3d& force,
+              Eigen::Vector3d& torque) const;
+
+  // The element's I marker and its J marker as the data set names it (JFLOAT for VFORCE,
+  // VTORQUE, GFORCE; the J of an action-only SFORCE, which takes no reaction).
+  int iMarker(ForceElementRef e) const;
+  int jMarker(ForceElementRef e) const;
+
+  // Value of SFORCE k's function (exposed for diagnostics).
+  template <class T>
+  T sforceValue(int k, double t, const T* y) const {
+    return evaluateFunction(*model_, layout_, model_->sforces[k].function, t, y,
+                            scratchValues_, scratchGrad_);
+  }
+
+  // The relative rotation about zJ of a rotational SPRINGDAMPER's markers, unwrapped about the
+  // value at the data set's configuration: in (ref - pi, ref + pi].
+  template <class T>
+  T springDamperAngle(int k, const MarkerState<T>& mi, const MarkerState<T>& mj) const;
+
+  // The displacement q = (x, y, z, a, b, c) of I relative to J in J axes and its rate
+  // (translational velocity seen from J, relative angular velocity), BUSHING/FIELD/BEAM.
+  template <class T>
+  static void fieldDisplacement(const MarkerState<T>& mi, const MarkerState<T>& mj, T q[6],
+                                T qdot[6]);
+
+ private:
+  template <class T>
+  ElementLoads<T> sforceLoads(int k, double t, const T* y) const;
+  template <class T>
+  ElementLoads<T> springDamperLoads(int k, const T* y) const;
+  template <class T>
+  ElementLoads<T> linearFieldLoads(int k, const T* y) const;
+  template <class T>
+  ElementLoads<T> vectorForceLoads(int k, double t, const T* y) const;
+  template <class T>
+  void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
+                   bool hasForce, bool hasTorque, const T* y, T* g) const;
+
+  const model::Model* model_;
+  StateLayout layout_;  // own copy (only body offsets are read): the owner may be moved
+  std::vector<ForceElementRef> elements_;
+  std::vector<double> angleReference_;  // per SPRINGDAMPER (rotational ones only)
+  mutable std::vector<double> scratchValues_, scratchGrad_;
+};
+
+// ---- implementation of the templates ----
+
+template <class T>
+T ForceElements::springDamperAngle(int k, const MarkerState<T>& mi,
+                                   const MarkerState<T>& mj) const {
+  // The angle from x_J to x_I about z_J, from x_I projected on the x_J-y_J plane.
+  const T raw = atan2Of(dot(mi.a.c[0], mj.a.c[1]), dot(mi.a.c[0], mj.a.c[0]));
+  const double twoPi = 2.0 * std::numbers::pi;
+  return raw - twoPi * std::round((valueOf(raw) - angleReference_[k]) / twoPi);
+}
+
+template <class T>
+void ForceElements::fieldDisplacement(const MarkerState<T>& mi, const MarkerState<T>& mj,
+                                      T q[6], T qdot[6]) {
+  const V3<T> d = mi.p - mj.p;
+  const V3<T> dj = mj.a.tmul(d);
+  // Projected rotations (AX, AY, AZ of I relative to J, not unwrapped): exact for a rotation
+  // about one J axis, the usual small-angle measures otherwise.
+  const V3<T>& xi = mi.a.c[0];
+  const V3<T>& zi = mi.a.c[2];
+  q[0] = dj.x;
+  q[1] = dj.y;
+  q[2] = dj.z;
+  q[3] = atan2Of(-dot(zi, mj.a.c[1]), dot(zi, mj.a.c[2]));
+  q[4] = atan2Of(dot(zi, mj.a.c[0]), dot(zi, mj.a.c[2]));
+  q[5] = atan2Of(dot(xi, mj.a.c[1]), dot(xi, mj.a.c[0]));
+  // d/dt of d as seen from J, and the angular velocity of I relative to J, in J axes.
+  const V3<T> vj = mj.a.tmul(mi.pdot - mj.pdot - cross(mj.w, d));
+  const V3<T> wj = mj.a.tmul(mi.w - mj.w);
+  for (int c = 0; c < 3; ++c) {
+    qdot[c] = vj[c];
+    qdot[3 + c] = wj[c];
+  }
+}
+
+template <class T>
+ElementLoads<T> ForceElements::sforceLoads(int k, double t, const T* y) const {
+  const model::SForce& f = model_->sforces[k];
+  const T value = sforceValue(k, t, y);
+  const MarkerState<T> fi = markerState(*model_, layout_, f.iMarker, y);
+  const MarkerState<T> fj = markerState(*model_, layout_, f.jMarker, y);
+  ElementLoads<T> l;
+  V3<T> onI;
+  if (f.rotation || f.actionOnly) {
+    onI = fj.a.c[2] * value;  // about or along z_J
+  } else {
+    const V3<T> d = fi.p - fj.p;
+    onI = d * (value / norm(d));  // positive values push I and J apart
+  }
+  if (f.rotation) {
+    l.torque = onI;
+    l.hasTorque = true;
+    l.reactionTorque = -onI;
+  } else {
+    l.force = onI;
+    l.hasForce = true;
+    l.reactionForce = -onI;
+  }
+  if (!f.actionOnly) {
+    l.reactionMarker = f.jMarker;
+    l.reactionPoint = fj.p;
+  }
+  return l;
+}
+
+template <class T>
+ElementLoads<T> ForceElements::springDamperLoads(int k, const T* y) const {
+  const model::SpringDamper& s = model_->springDampers[k];
+  const MarkerState<T> mi = markerState(*model_, layout_, s.iMarker, y);
+  const MarkerState<T> mj = markerState(*model_, layout_, s.jMarker, y);
+  ElementLoads<T> l;
+  l.reactionMarker = s.jMarker;
+  l.reactionPoint = mj.p;
+  if (s.rotational) {
+    const T angle = springDamperAngle(k, mi, mj);
+    const T rate = dot(mi.w - mj.w, mj.a.c[2]);
+    const T value = -s.damping * rate - s.stiffness * (angle - s.freeValue) + s.preload;
+    l.torque = mj.a.c[2] * value;
+    l.hasTorque = true;
+    l.reactionTorque = -l.torque;
+  } else {
+    const V3<T> d = mi.p - mj.p;
+    const T length = norm(d);
+    const T rate = dot(d, mi.pdot - mj.pdot) / length;
+    const T value = -s.damping * rate - s.stiffness * (length - s.freeValue) + s.preload;
+    l.force = d * (value / length);  // positive values push I and J apart
+    l.hasForce = true;
+    l.reactionForce = -l.force;
+  }
+  return l;
+}
+
+template <class T>
+ElementLoads<T> ForceElements::linearFieldLoads(int k, const T* y) const {
+  const model::LinearField& f = model_->linearFields[k];
+  const MarkerState<T> mi = markerState(*model_, layout_, f.iMarker, y);
+  const MarkerState<T> mj = markerState(*model_, layout_, f.jMarker, y);
+  T q[6], qdot[6];
+  fieldDisplacement(mi, mj, q, qdot);
+  T load[6];
+  for (int r = 0; r < 6; ++r) {
+    T sum = T(f.preload(r));
+    for (int c = 0; c < 6; ++c) {
+      if (f.stiffness(r, c) != 0.0) sum = sum - f.stiffness(r, c) * (q[c] - f.reference(c));
+      if (f.damping(r, c) != 0.0) sum = sum - f.damping(r, c) * qdot[c];
+    }
+    load[r] = sum;
+  }
+  ElementLoads<T> l;
+  l.force = mj.a * V3<T>(load[0], load[1], load[2]);
+  l.torque = mj.a * V3<T>(load[3], load[4], load[5]);
+  l.hasForce = l.hasTorque = true;
+  // The reaction acts on J's part through I's origin: equal and opposite force, and a torque
+  // on J that includes the moment of the force about J (the element is in equilibrium).
+  l.reactionMarker = f.jMarker;
+  l.reactionPoint = mi.p;
+  l.reactionForce = -l.force;
+  l.reactionTorque = -l.torque;
+  return l;
+}
+
+template <class T>
+ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y) const {
+  const model::VectorForce& f = model_->vectorForces[k];
+  const MarkerState<T> mi = markerState(*model_, layout_, f.iMarker, y);
+  const M3<T> rm = markerState(*model_, layout_, f.rmMarker, y).a;
+  T c[6];
+  for (int n = 0; n < 6; ++n)
+    c[n] = f.components[n] ? evaluateFunction(*model_, layout_, *f.components[n], t, y,
+                                              scratchValues_, scratchGrad_)
+                           : T(0.0);
+  ElementLoads<T> l;
+  l.hasForce = f.kind != model::VectorForce::Kind::VTorque;
+  l.hasTorque = f.kind != model::VectorForce::Kind::VForce;
+  l.force = rm * V3<T>(c[0], c[1], c[2]);
+  l.torque = rm * V3<T>(c[3], c[4], c[5]);
+  // The floating J marker is kept at I: the reaction acts on its part at I's location.
+  l.reactionMarker = f.jFloat;
+  l.reactionPoint = mi.p;
+  l.reactionForce = -l.force;
+  l.reactionTorque = -l.torque;
+  return l;
+}
+
+template <class T>
+ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y) const {
+  switch (e.kind) {
+    case ForceElementKind::SForce: return sforceLoads(e.index, t, y);
+    case ForceElementKind::SpringDamper: return springDamperLoads(e.index, y);
+    case ForceElementKind::LinearField: return linearFieldLoads(e.index, y);
+    case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y);
+  }
+  return {};
+}
+
+template <class T>
+void ForceElements::applyToBody(int marker, const V3<T>& point, const V3<T>& force,
+                                const V3<T>& torque, bool hasForce, bool hasTorque, const T* y,
+                                T* g) const {
+  const int body = model_->parts[model_->markers[marker].part].body;
+  if (body < 0) return;
+  const BodyPose<T> pose = bodyPose(layout_, body, y);
+  T* gv = g + layout_.body(body) + StateLayout::kV;
+  T* gw = g + layout_.body(body) + StateLayout::kW;
+  // Force in ground; torque about the CM in body axes (the rows' convention, theory.md §4).
+  if (hasForce) {
+    const V3<T> nb = pose.a.tmul(cross(point - pose.r, force));
+    for (int c = 0; c < 3; ++c) {
+      gv[c] = gv[c] - force[c];
+      gw[c] = gw[c] - nb[c];
+    }
+  }
+  if (hasTorque) {
+    const V3<T> nb = pose.a.tmul(torque);
+    for (int c = 0; c < 3; ++c) gw[c] = gw[c] - nb[c];
+  }
+}
+
+template <class T>
+void ForceElements::addToResidual(double t, const T* y, T* g) const {
+  for (const ForceElementRef& e : elements_) {
+    const ElementLoads<T> l = loads(e, t, y);
+    const int im = iMarker(e);
+    const MarkerState<T> mi = markerState(*model_, layout_, im, y);
+    applyToBody(im, mi.p, l.force, l.torque, l.hasForce, l.hasTorque, y, g);
+    if (l.reactionMarker >= 0)
+      applyToBody(l.reactionMarker, l.reactionPoint, l.reactionForce, l.reactionTorque,
+                  l.hasForce, l.hasTorque, y, g);
+  }
+}
+
+}  // namespace openmss::mechanics

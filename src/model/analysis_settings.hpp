@@ -1,0 +1,51 @@
+#pragma once
+// Solution-control parameters of the EQUILIBRIUM and IC statements and commands (digest §1.7,
+// §7.3). The statement sets them in the Model; the command of the same name changes them
+// between analyses. Defaults are ADAMS/Solver (C++)'s.
+
+#include <array>
+#include <numbers>
+
+#include "common/diagnostics.hpp"
+#include "language/dataset.hpp"
+
+namespace openmss::model {
+
+// PATTERN=c1:...:c10: entry j tells whether the Jacobian is re-formed at iteration j; the
+// pattern repeats until MAXIT. Iteration 0 always forms it.
+struct JacobianPattern {
+  std::array<bool, 10> evaluate = {true, true, true, true, true, true, true, true, true, true};
+  bool at(int iteration) const { return iteration == 0 || evaluate[iteration % 10]; }
+};
+
+struct EquilibriumSettings {
+  double angleLimit = 10.0 * std::numbers::pi / 180.0;  // ALIMIT, rad per iteration
+  double error = 1e-4;             // ERROR: largest position correction at convergence
+  double imbalance = 1e-4;         // IMBALANCE: largest force/moment residual at convergence
+  int maxit = 25;                  // MAXIT
+  JacobianPattern pattern;         // PATTERN
+  double stability = 1e-5;         // STABILITY: fraction of the mass matrix added to the stiffness
+  double translationLimit = 20.0;  // TLIMIT, length units per iteration
+};
+
+struct InitialConditionSettings {
+  double accelerationError = 1e-4;                      // AERROR
+  double angleLimit = 30.0 * std::numbers::pi / 180.0;  // ALIMIT
+  int accelerationMaxit = 25;                           // AMAXIT
+  JacobianPattern accelerationPattern;                  // APATTERN
+  double error = 1e-10;                                 // ERROR (positions)
+  int maxit = 25;                                       // MAXIT (positions)
+  JacobianPattern pattern;                              // PATTERN (positions)
+  double translationLimit = 1e10;                       // TLIMIT
+  double velocityError = 1e-4;                          // VERROR
+};
+
+// Apply the arguments of an EQUILIBRIUM or IC statement/command. Unsupported arguments
+// (the FORTRAN dynamic-relaxation options of EQUILIBRIUM) and out-of-range values are errors.
+// DEFAULT resets everything first. Returns false when an error was added.
+bool applyEquilibriumArguments(const language::Statement& s, EquilibriumSettings& settings,
+                               Diagnostics& diags);
+bool applyInitialConditionArguments(const language::Statement& s,
+                                    InitialConditionSettings& settings, Diagnostics& diags);
+
+}  // namespace openmss::model

@@ -1,0 +1,232 @@
+// Every joint type, joint primitive and marker-pair motion, each on one part against ground:
+// constraint rows against central differences of the constraint values (virtual
+// displacements), the Newton matrix against central differences of the residual, the
+// constraint rates against differences along the motion, the equations' values at the data
+// set's configuration (zero: the markers are placed to satisfy them) and the degrees of
+// freedom (6 - rank of C there).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+#include <string>
+
+#include "language/reader.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "mechanics/multibody_system.hpp"
+#include "model/model_builder.hpp"
+
+namespace openmss::mechanics {
+namespace {
+
+using L = StateLayout;
+
+struct Case {
+  const char* name;
+  const char* element;  // statements between I=21 (part 2) and J=10 (ground)
+  int equations;
+  int dof;
+};
+
+// Part 2's BCS is ground's, so marker 21 written with marker 10's QP and REULER coincides with
+// it; the body frame (the CM marker's) is placed generically. Cases whose equations need zI
+// perpendicular to zJ (UNIVERSAL, PERPENDICULAR) turn theta by 90 degrees: zI.zJ =
+// cos(theta_I - theta_J) for equal psi.
+std::string dataSet(const Case& c) {
+  const std::string name = c.name;
+  const bool perpendicular = name == "UNIVERSAL" || name == "PERPENDICULAR";
+  std::string text =
+      "joint test\n"
+      "PART/1, GROUND\n"
+      "MARKER/10, PART=1, QP=0.3,-0.2,0.5, REULER=0.4,0.7,-0.2\n"
+      "PART/2, MASS=2, CM=20, IP=1,2,3\n"
+      "MARKER/20, PART=2, QP=0.2,0.1,-0.3, REULER=0.3,0.2,0.1\n";
+  if (perpendicular)
+    text += "MARKER/21, PART=2, QP=0.3,-0.2,0.5, REULER=0.4,2.2707963267948966,-0.2\n";
+  else if (name == "RACKPIN")  // the pinion's x axis along the rack's z axis, z along xJ
+    text +=
+        "MARKER/21, PART=2, QP=0.3,-0.2,0.5, ZP=1.261873480440066,0.04170005265827717,"
+        "0.37201370319014587, XP=0.55087018385001429,-0.79336378336138735,1.2648421872844886\n";
+  else
+    text += "MARKER/21, PART=2, QP=0.3,-0.2,0.5, REULER=0.4,0.7,-0.2\n";
+  text += std::string(c.element) + "\nEND\n";
+  return text;
+}
+
+model::Model build(const std::string& text) {
+  language::Dataset ds;
+  Diagnostics d;
+  language::readDatasetText(text, "joint.adm", ds, d);
+  model::Model m;
+  EXPECT_TRUE(model::buildModel(ds, m, d)) << text;
+  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
+  return m;
+}
+
+Eigen::VectorXd randomState(const MultibodySystem& s, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  Eigen::VectorXd y = s.initialState();
+  for (int b = 0; b < s.layout().bodies; ++b) {
+    const int o = s.layout().body(b);
+    for (int c = 0; c < 3; ++c) y(o + L::kR + c) += 0.1 * u(rng);
+    Eigen::Vector4d e = y.segment<4>(o + L::kE);
+    for (int c = 0; c < 4; ++c) e(c) += 0.2 * u(rng);
+    y.segment<4>(o + L::kE) = e.normalized();
+    for (int c = 0; c < 3; ++c) {
+      y(o + L::kV + c) = u(rng);
+      y(o + L::kW + c) = u(rng);
+    }
+    y(o + L::kMu) = 0.01 * u(rng);
+  }
+  for (int k = 0; k < s.layout().constraintEquations; ++k) y(s.layout().lambda(k)) = 10.0 * u(rng);
+  return y;
+}
+
+Eigen::VectorXd turned(const Eigen::VectorXd& y, int o, const Eigen::Vector3d& axis, double angle) {
+  Eigen::VectorXd z = y;
+  const Eigen::Vector4d e = z.segment<4>(o + L::kE);
+  const Eigen::Quaterniond q(e(0), e(1), e(2), e(3));
+  const Eigen::Quaterniond qr = q * Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
+  z.segment<4>(o + L::kE) << qr.w(), qr.x(), qr.y(), qr.z();
+  return z;
+}
+
+class JointEquations : public ::testing::TestWithParam<Case> {};
+
+TEST_P(JointEquations, HoldAtTheDataSetAndGiveTheirDegreesOfFreedom) {
+  const model::Model m = build(dataSet(GetParam()));
+  MultibodySystem s(m);
+  ASSERT_EQ(s.constraints().size(), GetParam().equations);
+  const Eigen::VectorXd y = s.initialState();
+  for (int k = 0; k < s.constraints().size(); ++k)
+    EXPECT_NEAR(s.constraintValue(k, 0.0, y.data()), 0.0, 1e-14) << s.constraints().describe(k, m);
+  const auto red = removeRedundantConstraints(s, y);
+  EXPECT_EQ(6 - red.rank, GetParam().dof);
+  EXPECT_TRUE(red.removed.empty());
+  EXPECT_EQ(ConstraintSet::grueblerCount(m), GetParam().dof);
+}
+
+TEST_P(JointEquations, RowsAreVirtualDisplacementDerivatives) {
+  const model::Model m = build(dataSet(GetParam()));
+  const MultibodySystem s(m);
+  std::mt19937 rng(11);
+  for (int trial = 0; trial < 3; ++trial) {
+    const Eigen::VectorXd y = randomState(s, rng);
+    std::vector<double> row(6);
+    for (int k = 0; k < s.constraints().size(); ++k) {
+      s.constraintRow(k, y.data(), row.data());
+      for (int dir = 0; dir < 6; ++dir) {
+        auto displaced = [&](double h) {
+          Eigen::VectorXd z = y;
+          if (dir < 3) {
+            z(L::kR + dir) += h;
+          } else {
+            z = turned(y, 0, Eigen::Vector3d::Unit(dir - 3), h);
+          }
+          return s.constraintValue(k, 0.3, z.data());
+        };
+        const double h = 1e-6;
+        const double fd = (displaced(h) - displaced(-h)) / (2 * h);
+        // Central differences with h = 1e-6 on O(1) quantities: error ~1e-10 (truncation h^2
+        // and round-off 1e-16/h); 1e-7 leaves margin.
+        EXPECT_NEAR(row[dir], fd, 1e-7 * (1.0 + std::abs(fd)))
+            << s.constraints().describe(k, m) << " direction " << dir;
+      }
+    }
+  }
+}
+
+TEST_P(JointEquations, NewtonMatrixMatchesCentralDifferences) {
+  const model::Model m = build(dataSet(GetParam()));
+  const MultibodySystem s(m);
+  std::mt19937 rng(7);
+  const int n = s.layout().size();
+  const Eigen::VectorXd y = randomState(s, rng);
+  Eigen::VectorXd yp = Eigen::VectorXd::Random(n);
+  const double cj = 37.0, t = 0.123;
+  Eigen::MatrixXd jac;
+  s.newtonMatrix(t, y, yp, cj, jac);
+  for (int c = 0; c < n; ++c) {
+    const double h = 1e-6 * std::max(1.0, std::abs(y(c)));
+    Eigen::VectorXd yA = y, yB = y, pA = yp, pB = yp;
+    yA(c) += h;
+    yB(c) -= h;
+    if (s.layout().differential(c)) {
+      pA(c) += cj * h;
+      pB(c) -= cj * h;
+    }
+    Eigen::VectorXd gA(n), gB(n);
+    s.residual(t, yA.data(), pA.data(), gA.data());
+    s.residual(t, yB.data(), pB.data(), gB.data());
+    const Eigen::VectorXd fd = (gA - gB) / (2 * h);
+    for (int r = 0; r < n; ++r)
+      EXPECT_NEAR(jac(r, c), fd(r), 1e-6 * (1.0 + std::abs(fd(r)))) << "row " << r << " col " << c;
+  }
+}
+
+TEST_P(JointEquations, RatesMatchDifferencesAlongTheMotion) {
+  const model::Model m = build(dataSet(GetParam()));
+  const MultibodySystem s(m);
+  std::mt19937 rng(5);
+  const Eigen::VectorXd y = randomState(s, rng);
+  auto moved = [&](double h) {
+    Eigen::VectorXd z = y;
+    z.segment<3>(L::kR) += h * y.segment<3>(L::kV);
+    const Eigen::Vector3d w = y.segment<3>(L::kW);
+    return turned(z, 0, w / w.norm(), h * w.norm());
+  };
+  for (int k = 0; k < s.constraints().size(); ++k) {
+    double first = 0, second = 0;
+    s.constraintRates(k, y.data(), &first, &second);
+    const double h = 1e-4;
+    // Time is held fixed: the differences see the geometry only, as the rates do.
+    const double p = s.constraintValue(k, 0.5, moved(h).data());
+    const double z = s.constraintValue(k, 0.5, y.data());
+    const double mns = s.constraintValue(k, 0.5, moved(-h).data());
+    EXPECT_NEAR(first, (p - mns) / (2 * h), 1e-7 * (1.0 + std::abs(first))) << k;
+    // Second differences: truncation ~h^2 = 1e-8, round-off ~1e-16/h^2 = 1e-8.
+    EXPECT_NEAR(second, (p - 2 * z + mns) / (h * h), 1e-5 * (1.0 + std::abs(second))) << k;
+  }
+}
+
+const Case kCases[] = {
+    {"REVOLUTE", "JOINT/1, REVOLUTE, I=21, J=10", 5, 1},
+    {"SPHERICAL", "JOINT/1, SPHERICAL, I=21, J=10", 3, 3},
+    {"UNIVERSAL", "JOINT/1, UNIVERSAL, I=21, J=10", 4, 2},
+    {"HOOKE", "JOINT/1, HOOKE, I=21, J=10", 4, 2},
+    {"TRANSLATIONAL", "JOINT/1, TRANSLATIONAL, I=21, J=10", 5, 1},
+    {"CYLINDRICAL", "JOINT/1, CYLINDRICAL, I=21, J=10", 4, 2},
+    {"FIXED", "JOINT/1, FIXED, I=21, J=10", 6, 0},
+    {"CONVEL", "JOINT/1, CONVEL, I=21, J=10", 4, 2},
+    {"PLANAR", "JOINT/1, PLANAR, I=21, J=10", 3, 3},
+    {"RACKPIN", "JOINT/1, RACKPIN, PD=0.8, I=21, J=10", 1, 5},
+    {"SCREW", "JOINT/1, SCREW, PITCH=0.05, I=21, J=10", 1, 5},
+    {"SCREW_LEFT", "JOINT/1, SCREW, PITCH=-0.3, I=21, J=10", 1, 5},
+    {"ATPOINT", "JPRIM/1, ATPOINT, I=21, J=10", 3, 3},
+    {"INLINE", "JPRIM/1, INLINE, I=21, J=10", 2, 4},
+    {"INPLANE", "JPRIM/1, INPLANE, I=21, J=10", 1, 5},
+    {"ORIENTATION", "JPRIM/1, ORIENTATION, I=21, J=10", 3, 3},
+    {"PARALLEL_AXES", "JPRIM/1, PARALLEL_AXES, I=21, J=10", 2, 4},
+    {"PERPENDICULAR", "JPRIM/1, PERPENDICULAR, I=21, J=10", 1, 5},
+    {"MOTION_REVOLUTE", "JOINT/1, REVOLUTE, I=21, J=10\nMOTION/1, JOINT=1, FUNCTION=0.3*TIME**2", 6,
+     0},
+    {"MOTION_TRANSLATIONAL",
+     "JOINT/1, TRANSLATIONAL, I=21, J=10\nMOTION/1, JOINT=1, FUNCTION=0.2*SIN(TIME)", 6, 0},
+    {"MOTION_X", "MOTION/1, I=21, J=10, X, FUNCTION=0.2*SIN(TIME)", 1, 5},
+    {"MOTION_Y", "MOTION/1, I=21, J=10, Y, FUNCTION=0.2*SIN(TIME)", 1, 5},
+    {"MOTION_Z", "MOTION/1, I=21, J=10, Z, FUNCTION=0.2*SIN(TIME)", 1, 5},
+    {"MOTION_B1", "MOTION/1, I=21, J=10, B1, FUNCTION=0.2*SIN(TIME)", 1, 5},
+    {"MOTION_B2", "MOTION/1, I=21, J=10, B2, FUNCTION=0.2*SIN(TIME)", 1, 5},
+    {"MOTION_B3", "MOTION/1, I=21, J=10, B3, FUNCTION=0.2*SIN(TIME)", 1, 5},
+    {"MOTION_VELOCITY", "MOTION/1, I=21, J=10, B3, VELOCITY, FUNCTION=COS(TIME)", 1, 5},
+    {"MOTION_ACCELERATION", "MOTION/1, I=21, J=10, Z, ACCELERATION, ICVEL=0.5, FUNCTION=COS(TIME)",
+     1, 5},
+};
+
+INSTANTIATE_TEST_SUITE_P(AllKinds, JointEquations, ::testing::ValuesIn(kCases),
+                         [](const ::testing::TestParamInfo<Case>& param) {
+                           return std::string(param.param.name);
+                         });
+
+}  // namespace
+}  // namespace openmss::mechanics
