@@ -14,6 +14,29 @@ const char* bodyEntry(int offset, bool equation) {
   return equation ? eqs[offset] : vars[offset];
 }
 
+// The user state at index i (docs/theory.md §4a): "DIFF/3 state", "VARIABLE/2", ...
+std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, int i,
+                      bool equation) {
+  const int nv = static_cast<int>(m.variables.size());
+  const int nd = static_cast<int>(m.diffs.size());
+  if (l.isUserDifferential(i)) {
+    const int k = i - l.userDiff(0);
+    if (k < nd)
+      return (equation ? "dDIF/dt = DIF1 of DIFF/" : "DIF of DIFF/") + std::to_string(m.diffs[k].id);
+    for (const auto& e : m.linearStates)
+      if (k >= e.firstState && k < e.firstState + e.a.rows())
+        return std::string(equation ? "state equation " : "state ") +
+               std::to_string(k - e.firstState + 1) + " of " +
+               (e.kind == model::LinearStateElement::Kind::Lse ? "LSE/" : "TFSISO/") +
+               std::to_string(e.id);
+    return "user state";
+  }
+  const int k = i - l.userAlg(0);
+  if (k < nv) return "VARIABLE/" + std::to_string(m.variables[k].id) + (equation ? " function" : "");
+  return std::string(equation ? "FUNCTION of DIFF/" : "DIF1 of DIFF/") +
+         std::to_string(m.diffs[k - nv].id);
+}
+
 }  // namespace
 
 std::string MultibodyDae::equationName(int row) const {
@@ -25,7 +48,8 @@ std::string MultibodyDae::equationName(int row) const {
     return std::string(bodyEntry(row % l.kPerBody, true)) + " of PART/" +
            std::to_string(m.parts[m.movingParts[b]].id);
   }
-  return system_.constraints().describe(row - l.kPerBody * l.bodies, m);
+  if (l.isUser(row)) return userEntry(l, m, row, true);
+  return system_.constraints().describe(row - l.lambda(0), m);
 }
 
 std::string MultibodyDae::variableName(int i) const {
@@ -37,7 +61,8 @@ std::string MultibodyDae::variableName(int i) const {
     return std::string(bodyEntry(i % l.kPerBody, false)) + " of PART/" +
            std::to_string(m.parts[m.movingParts[b]].id);
   }
-  return "reaction of " + system_.constraints().describe(i - l.kPerBody * l.bodies, m);
+  if (l.isUser(i)) return userEntry(l, m, i, false);
+  return "reaction of " + system_.constraints().describe(i - l.lambda(0), m);
 }
 
 }  // namespace openmss::analysis

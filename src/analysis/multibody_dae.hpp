@@ -32,7 +32,8 @@ class MultibodyDae : public solvers::DaeProblem {
  private:
   int scaleExponent(int i) const {
     const auto& l = system_.layout();
-    if (i >= mechanics::StateLayout::kPerBody * l.bodies) return 2;
+    if (i >= l.lambda(0)) return 2;
+    if (i >= l.userStates()) return 0;  // user equations (docs/theory.md §4a)
     return i % mechanics::StateLayout::kPerBody == mechanics::StateLayout::kMu ? 1 : 0;
   }
   const mechanics::MultibodySystem& system_;

@@ -5,11 +5,14 @@
 #include <cstdio>
 #include <filesystem>
 
+#include "analysis/eprint_log.hpp"
 #include "analysis/multibody_dae.hpp"
 #include "analysis/request_values.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/loop_count.hpp"
+#include "mechanics/user_state_solve.hpp"
+#include "mechanics/redundancy_check.hpp"
 #include "model/model_builder.hpp"
 
 namespace openmss::analysis {
@@ -30,6 +33,32 @@ std::optional<double> number(const language::Statement& s, const char* name) {
   if (!a || a->values.empty() || a->values[0].kind != language::Value::Kind::Number)
     return std::nullopt;
   return a->values[0].number;
+}
+
+// "SFORCE/104", "BUSHING/3", ... for diagnostics.
+std::string forceElementName(const model::Model& m, const mechanics::ForceElementRef& e) {
+  using K = mechanics::ForceElementKind;
+  switch (e.kind) {
+    case K::SForce:
+      return "SFORCE/" + std::to_string(m.sforces[e.index].id);
+    case K::SpringDamper:
+      return "SPRINGDAMPER/" + std::to_string(m.springDampers[e.index].id);
+    case K::LinearField: {
+      const auto& f = m.linearFields[e.index];
+      const char* name = f.kind == model::LinearField::Kind::Bushing ? "BUSHING"
+                         : f.kind == model::LinearField::Kind::Beam  ? "BEAM"
+                                                                      : "FIELD";
+      return std::string(name) + "/" + std::to_string(f.id);
+    }
+    case K::VectorForce: {
+      const auto& f = m.vectorForces[e.index];
+      const char* name = f.kind == model::VectorForce::Kind::VTorque  ? "VTORQUE"
+                         : f.kind == model::VectorForce::Kind::GForce ? "GFORCE"
+                                                                       : "VFORCE";
+      return std::string(name) + "/" + std::to_string(f.id);
+    }
+  }
+  return "?";
 }
 
 }  // namespace
@@ -109,6 +138,15 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   msg_.line("   Joints:               " + std::to_string(m.joints.size()));
   msg_.line("   Motions:              " + std::to_string(m.motions.size()));
   msg_.line("   SFORCEs:              " + std::to_string(m.sforces.size()));
+  msg_.line("   Other force elements: " +
+            std::to_string(m.springDampers.size() + m.linearFields.size() +
+                           m.vectorForces.size()) +
+            " (SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE)");
+  if (m.userDifferentialCount() + m.userAlgebraicCount() > 0)  // docs/theory.md §4a
+    msg_.line("   User equations:       " + std::to_string(m.variables.size()) + " VARIABLE, " +
+              std::to_string(m.diffs.size()) + " DIFF, " + std::to_string(m.linearStates.size()) +
+              " LSE/TFSISO; " + std::to_string(m.userDifferentialCount()) +
+              " user states integrated");
   msg_.line("   Requests:             " + std::to_string(m.requests.size()));
   msg_.line("   Constraint equations: " + std::to_string(system_->constraints().size()));
   msg_.line("   Gruebler count:       " + std::to_string(gruebler_) + " degrees of freedom");
@@ -144,6 +182,8 @@ bool Session::execute(const language::Statement& c) {
   if (c.name == "INTEGRATOR" || c.name == "GSTIFF") return setIntegrator(c);
   if (c.name == "OUTPUT") return setOutput(c);
   if (c.name == "EQUILIBRIUM" || c.name == "IC") return setAnalysisParameters(c);
+  if (c.name == "LINEAR") return linear(c);
+  if (c.name == "DEBUG") return setDebug(c);
   error(c, c.name + " is not supported yet by the solver",
         "README.md lists the supported commands; remove this one or run it elsewhere.");
   return false;
@@ -211,7 +251,23 @@ bool Session::initialConditions() {
     report(diags_.all().back());
     return false;
   }
-  mechanics::solveVelocities(*system_, t_, y_);
+  mechanics::solveVelocities(*system_, t_, y_, /*holdJointInitialConditions=*/true);
+  // VARIABLE values and DIFF derivatives (docs/theory.md §4a): a loop without a solution is
+  // named here rather than reported as a singular acceleration problem.
+  if (const auto user = mechanics::solveUserAlgebraic(*system_, t_, y_); !user.converged) {
+    diags_.error({m.file, 0, 0}, "",
+                 "the user equations cannot be solved at the initial state: " +
+                     MultibodyDae(*system_).equationName(
+                         system_->layout().userAlg(std::max(0, user.worstRow))) +
+                     " is still violated by " + fmt("%.3E", user.residual) +
+                     (user.singular ? " (their Jacobian is singular)"
+                                    : " after " + std::to_string(user.iterations) +
+                                          " Newton iterations"),
+                 "Check the VARIABLE and DIFF functions for an algebraic loop without a solution "
+                 "(VARIABLE/1, FUNCTION=VARVAL(1)+1 has none), or give IC= starting values.");
+    report(diags_.all().back());
+    return false;
+  }
   if (!mechanics::solveAccelerations(*system_, t_, y_, yp_)) {
     diags_.error({m.file, 0, 0}, "",
                  "the accelerations and constraint forces at the initial state cannot be "
@@ -227,6 +283,18 @@ bool Session::initialConditions() {
 
 bool Session::writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
   const model::Model& m = *model_;
+  // Every output step of every analysis passes here: a redundant equation that has come
+  // apart stops the run before the step is written (mechanics/redundancy_check.hpp).
+  if (const auto bad = mechanics::violatedRedundantEquation(
+          *system_, t, y.data(), mechanics::redundantTolerance(m))) {
+    diags_.error({m.file, 0, 0}, "", mechanics::describeViolation(*system_, *bad, t),
+                 "Make the duplicated constraints agree (coaxial hinges stay coaxial, a motion "
+                 "must not drive the mechanism where a removed equation cannot follow), or "
+                 "replace the redundant joint by a joint primitive. Outputs up to the last good "
+                 "step are written.");
+    report(diags_.all().back());
+    return false;
+  }
   if (!m.output.reqsave) return true;
   if (!req_.isOpen()) {
     output::RequestFileHeader h;
@@ -311,7 +379,15 @@ bool Session::simulate(const language::Statement& c) {
   nOut = std::max(1L, nOut);
   const double t0 = t_, outStep = (*end - t0) / static_cast<double>(nOut);
 
-  const bool kinematic = kin || (trans && dof_ == 0);
+  // DIFF, LSE and TFSISO states must be integrated: a 0-DOF model with them runs dynamics.
+  const bool userStates = system_->layout().userDifferential > 0;
+  const bool kinematic = kin || (trans && dof_ == 0 && !userStates);
+  if (kin && userStates) {
+    error(c, "a kinematic analysis does not integrate DIFF, LSE or TFSISO states; this model "
+             "has " + std::to_string(system_->layout().userDifferential),
+          "Use SIMULATE/TRANSIENT or SIMULATE/DYNAMICS.");
+    return false;
+  }
   if (kin && dof_ != 0) {
     error(c, "a kinematic analysis needs a model with zero degrees of freedom; this one has " +
                  std::to_string(dof_),
@@ -319,7 +395,7 @@ bool Session::simulate(const language::Statement& c) {
           "SIMULATE/DYNAMICS.");
     return false;
   }
-  if (dyn && dof_ == 0) {
+  if (dyn && dof_ == 0 && !userStates) {
     diags_.warning(c.where, c.subject(),
                    "the model has zero degrees of freedom; a kinematic analysis "
                    "(SIMULATE/KINEMATICS) would be more efficient. As requested, the simulation "
@@ -390,6 +466,8 @@ bool Session::simulate(const language::Statement& c) {
     msg_.line("      Time         Size       Evaluations  Steps Taken    Order");
     MultibodyDae dae(*system_);
     solvers::BdfIntegrator bdf(dae, s);
+    EprintLog eprint(msg_, dae);  // DEBUG/EPRINT: per step and iteration, to the .msg
+    if (m.debug.eprint) eprint.attach(bdf);
     bdf.start(t_, y_, yp_);
     const long logEvery = std::max(1L, nOut / 10);
     for (long i = 1; i <= nOut; ++i) {
@@ -408,14 +486,14 @@ bool Session::simulate(const language::Statement& c) {
         // blows up is the usual cause (seed: "avoid IFs like the plague").
         std::string forces;
         double biggest = -1.0;
-        for (int k = 0; k < static_cast<int>(m.sforces.size()); ++k) {
+        for (const auto& e : system_->forceElements().elements()) {
           Eigen::Vector3d fk, tk;
-          system_->sforceAction(k, false, bdf.t(), bdf.y().data(), fk, tk);
+          system_->forceElements().action(e, false, bdf.t(), bdf.y().data(), fk, tk);
           const double size = std::max(fk.norm(), tk.norm());
           if (!std::isfinite(size) || size > biggest) {
             biggest = size;
-            forces = "; the largest applied force at t = " + fmt("%.6E", bdf.t()) + " is SFORCE/" +
-                     std::to_string(m.sforces[k].id) + " (" + fmt("%.3E", size) + ")";
+            forces = "; the largest applied force at t = " + fmt("%.6E", bdf.t()) + " is " +
+                     forceElementName(m, e) + " (" + fmt("%.3E", size) + ")";
             if (!std::isfinite(size)) break;
           }
         }

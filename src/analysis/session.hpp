@@ -63,6 +63,9 @@ class Session {
   bool simulateStaticsOrInitialConditions(const language::Statement& command);
   bool staticEquilibriumAt(double t);
   mechanics::AssemblyResult assembleForInitialConditions();
+  // LINEAR/EIGENSOL and LINEAR/STATEMAT, and the DEBUG command (session_linear.cpp).
+  bool linear(const language::Statement& command);
+  bool setDebug(const language::Statement& command);
   bool writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp);
   void report(const Diagnostic& d);
   void error(const language::Statement& s, const std::string& message, const std::string& hint);

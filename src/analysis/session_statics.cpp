@@ -7,6 +7,7 @@
 #include "analysis/session.hpp"
 #include "analysis/statics.hpp"
 #include "mechanics/initial_conditions.hpp"
+#include "mechanics/user_state_solve.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -80,6 +81,7 @@ mechanics::AssemblyResult Session::assembleForInitialConditions() {
   o.angleLimit = ic.angleLimit;
   o.pattern = ic.pattern.evaluate;
   o.honourExact = true;
+  o.holdJointInitialConditions = true;  // JOINT IC=, ICTRAN=, ICROT=
   mechanics::AssemblyResult r = mechanics::assemblePositions(*system_, t_, y_, o);
   // Equations found redundant at the data set's configuration are not solved for; a model whose
   // redundant equations disagree with the rest (a link too short to reach) cannot close either.
@@ -261,6 +263,8 @@ bool Session::simulateStaticsOrInitialConditions(const language::Statement& c) {
         return false;
       }
       if (last == 2) mechanics::solveVelocities(*system_, t_, y_);
+      // VARIABLE values and DIFF derivatives of the written step (docs/theory.md §4a).
+      mechanics::solveUserAlgebraic(*system_, t_, y_);
       msg_.line(" End initial conditions: constraints satisfied to " + fmt("%.3E", r.residual));
     }
     ++summary_.steps;

@@ -22,16 +22,6 @@ std::vector<int> activeEquations(const mechanics::MultibodySystem& system) {
   return rows;
 }
 
-// de/d(delta pi_k) for a body-axes rotation: e (x) (0, e_k / 2).
-Eigen::Matrix<double, 4, 3> eulerParameterRates(const Eigen::Vector4d& e) {
-  Eigen::Matrix<double, 4, 3> g;
-  g << -e(1), -e(2), -e(3),  //
-      e(0), -e(3), e(2),     //
-      e(3), e(0), -e(1),     //
-      -e(2), e(1), e(0);
-  return 0.5 * g;
-}
-
 // The length that turns a rotation into a displacement for the singularity test: the largest
 // distance of a marker from its part's CM (1 when every marker sits at its CM).
 double characteristicLength(const model::Model& m) {
@@ -59,7 +49,7 @@ StiffnessAnalysis analyseStiffness(const Eigen::MatrixXd& jac, int nb, int na, d
   const Eigen::MatrixXd k = d.asDiagonal() * jac.topLeftCorner(n, n) * d.asDiagonal();
   StiffnessAnalysis s;
   if (na > 0) {
-    const Eigen::MatrixXd c = jac.bottomLeftCorner(na, n) * d.asDiagonal();
+    const Eigen::MatrixXd c = jac.block(n, 0, na, n) * d.asDiagonal();
     Eigen::JacobiSVD<Eigen::MatrixXd> svd(c, Eigen::ComputeFullV);
     const Eigen::VectorXd& sv = svd.singularValues();
     int rank = 0;
@@ -152,7 +142,47 @@ double largestCorrection(const Eigen::VectorXd& delta, int nb) {
   return nb > 0 ? delta.head(6 * nb).cwiseAbs().maxCoeff() : 0.0;
 }
 
+// The user states solved for in statics (docs/theory.md §4a): every user entry but the
+// differential states that STATIC_HOLD keeps fixed. Their rows are the same entries of the
+// residual with y' = 0 (a held state's row, y' = f, is dropped with it).
+std::vector<int> staticUserUnknowns(const mechanics::MultibodySystem& system) {
+  const StateLayout& l = system.layout();
+  const std::vector<bool> held = system.userEquations().staticHold();
+  std::vector<int> out;
+  for (int k = 0; k < l.userDifferential; ++k)
+    if (!held[static_cast<size_t>(k)]) out.push_back(l.userDiff(k));
+  for (int k = 0; k < l.userAlgebraic; ++k) out.push_back(l.userAlg(k));
+  return out;
+}
+
+// The Jacobian of the mechanical unknowns with the user unknowns condensed out (Schur
+// complement), so that the free-direction analysis sees the stiffness a controller adds.
+// False when the user block is singular (e.g. an integrator state only the balance rows
+// determine): the analysis is then skipped.
+bool condensedJacobian(const Eigen::MatrixXd& jac, int mechanical, Eigen::MatrixXd& out) {
+  const Eigen::Index nu = jac.rows() - mechanical;
+  if (nu == 0) {
+    out = jac;
+    return true;
+  }
+  Eigen::FullPivLU<Eigen::MatrixXd> lu(jac.bottomRightCorner(nu, nu));
+  if (!lu.isInvertible()) return false;
+  out = jac.topLeftCorner(mechanical, mechanical) -
+        jac.topRightCorner(mechanical, nu) * lu.solve(jac.bottomLeftCorner(nu, mechanical));
+  return true;
+}
+
 }  // namespace
+
+// de/d(delta pi_k) for a body-axes rotation: e (x) (0, e_k / 2).
+Eigen::Matrix<double, 4, 3> eulerParameterRates(const Eigen::Vector4d& e) {
+  Eigen::Matrix<double, 4, 3> g;
+  g << -e(1), -e(2), -e(3),  //
+      e(0), -e(3), e(2),     //
+      e(3), e(0), -e(1),     //
+      -e(2), e(1), e(0);
+  return 0.5 * g;
+}
 
 std::string MotionDirection::describe(const model::Model& model) const {
   char buf[160];
@@ -175,13 +205,16 @@ void staticResidual(const mechanics::MultibodySystem& system, double t, const Ei
   const Eigen::VectorXd yp = Eigen::VectorXd::Zero(l.size());
   Eigen::VectorXd full = Eigen::VectorXd::Zero(l.size());
   system.residual(t, ys.data(), yp.data(), full.data());
-  g.resize(6 * l.bodies + static_cast<Eigen::Index>(rows.size()));
+  const std::vector<int> users = staticUserUnknowns(system);
+  g.resize(6 * l.bodies + static_cast<Eigen::Index>(rows.size() + users.size()));
   for (int b = 0; b < l.bodies; ++b) {
     g.segment<3>(6 * b) = full.segment<3>(l.body(b) + StateLayout::kV);
     g.segment<3>(6 * b + 3) = full.segment<3>(l.body(b) + StateLayout::kW);
   }
   for (size_t r = 0; r < rows.size(); ++r)
     g(6 * l.bodies + static_cast<Eigen::Index>(r)) = full(l.lambda(rows[r]));
+  for (size_t u = 0; u < users.size(); ++u)
+    g(6 * l.bodies + static_cast<Eigen::Index>(rows.size() + u)) = full(users[u]);
 }
 
 void staticJacobian(const mechanics::MultibodySystem& system, double t, const Eigen::VectorXd& y,
@@ -189,8 +222,10 @@ void staticJacobian(const mechanics::MultibodySystem& system, double t, const Ei
   using D = Dual<double>;
   const StateLayout& l = system.layout();
   const std::vector<int> rows = activeEquations(system);
+  const std::vector<int> users = staticUserUnknowns(system);
   const int nb = l.bodies, na = static_cast<int>(rows.size()), n = l.size();
-  const int m = 6 * nb + na;
+  const int nu = static_cast<int>(users.size());
+  const int m = 6 * nb + na + nu;
   jac.resize(m, m);
   std::vector<D> yd(n), ypd(n, D(0.0)), g(n);
   for (int i = 0; i < n; ++i) yd[i] = D(y(i), 0.0);
@@ -208,6 +243,7 @@ void staticJacobian(const mechanics::MultibodySystem& system, double t, const Ei
         jac(6 * b + 3 + k, col) = g[l.body(b) + StateLayout::kW + k].d;
       }
     for (int r = 0; r < na; ++r) jac(6 * nb + r, col) = g[l.lambda(rows[r])].d;
+    for (int u = 0; u < nu; ++u) jac(6 * nb + na + u, col) = g[users[u]].d;
   };
   for (int b = 0; b < nb; ++b) {
     const int o = l.body(b);
@@ -229,6 +265,11 @@ void staticJacobian(const mechanics::MultibodySystem& system, double t, const Ei
     column(6 * nb + r);
     yd[l.lambda(rows[r])].d = 0.0;
   }
+  for (int u = 0; u < nu; ++u) {
+    yd[users[u]].d = 1.0;
+    column(6 * nb + na + u);
+    yd[users[u]].d = 0.0;
+  }
   if (activeRows) *activeRows = rows;
 }
 
@@ -239,6 +280,9 @@ void applyStaticCorrection(const mechanics::MultibodySystem& system,
   mechanics::applyBodyCorrection(l, delta.head(6 * l.bodies), y);
   for (size_t r = 0; r < activeRows.size(); ++r)
     y(l.lambda(activeRows[r])) += delta(6 * l.bodies + static_cast<Eigen::Index>(r));
+  const std::vector<int> users = staticUserUnknowns(system);
+  for (size_t u = 0; u < users.size(); ++u)
+    y(users[u]) += delta(6 * l.bodies + static_cast<Eigen::Index>(activeRows.size() + u));
 }
 
 EquilibriumResult solveStaticEquilibrium(const mechanics::MultibodySystem& system, double t,
@@ -265,13 +309,14 @@ EquilibriumResult solveStaticEquilibrium(const mechanics::MultibodySystem& syste
   int loadedSingular = 0;  // consecutive Jacobians with a free, loaded direction
   for (int it = 0;; ++it) {
     staticResidual(system, t, y, g);
-    const int na = static_cast<int>(g.size()) - 6 * nb;
+    const int na = static_cast<int>(g.size()) - 6 * nb;  // constraint and user rows
+    const int nu = static_cast<int>(staticUserUnknowns(system).size());
     result.imbalance = nb > 0 ? g.head(6 * nb).cwiseAbs().maxCoeff(&result.worstBody) : 0.0;
     if (nb > 0) result.worstBody /= 6;
     result.constraintError = na > 0 ? g.tail(na).cwiseAbs().maxCoeff() : 0.0;
     result.iterations = it;
     result.correction = lastCorrection;
-    if (nb == 0 || (result.imbalance <= settings.imbalance &&
+    if ((nb == 0 && nu == 0) || (result.imbalance <= settings.imbalance &&
                     result.constraintError <= settings.error && lastCorrection <= settings.error)) {
       result.status = EquilibriumResult::Status::Converged;
       break;
@@ -279,7 +324,11 @@ EquilibriumResult solveStaticEquilibrium(const mechanics::MultibodySystem& syste
     if (it >= settings.maxit) break;
     if (settings.pattern.at(it)) {
       staticJacobian(system, t, y, jac, &rows);
-      const FreeDirections free = freeDirections(system, y, jac, g, na, length, settings.imbalance);
+      Eigen::MatrixXd mechanical;
+      const FreeDirections free =
+          condensedJacobian(jac, 6 * nb + na - nu, mechanical)
+              ? freeDirections(system, y, mechanical, g, na - nu, length, settings.imbalance)
+              : FreeDirections{};
       loadedSingular = free.loaded.empty() ? 0 : loadedSingular + 1;
       if (!free.loaded.empty()) result.unbalanced = free.loaded.front();
       // A free direction that stays loaded and unrestrained while Newton moves the mechanism
@@ -304,14 +353,19 @@ EquilibriumResult solveStaticEquilibrium(const mechanics::MultibodySystem& syste
     }
     delta *= scale;
     lastCorrection = largestCorrection(delta, nb);
+    if (nu > 0) lastCorrection = std::max(lastCorrection, delta.tail(nu).cwiseAbs().maxCoeff());
     applyStaticCorrection(system, rows, delta, y);
   }
   if (result.status == EquilibriumResult::Status::Converged && nb > 0) {
     result.unbalanced.reset();
     std::vector<int> active;
     staticJacobian(system, t, y, jac, &active);
-    const FreeDirections free = freeDirections(system, y, jac, g, static_cast<int>(active.size()),
-                                               length, settings.imbalance);
+    const int na = static_cast<int>(active.size());
+    Eigen::MatrixXd mechanical;
+    const FreeDirections free =
+        condensedJacobian(jac, 6 * nb + na, mechanical)
+            ? freeDirections(system, y, mechanical, g, na, length, settings.imbalance)
+            : FreeDirections{};
     result.neutral = free.unloaded;
     result.unstable = free.negative;
   }

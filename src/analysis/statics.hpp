@@ -27,6 +27,11 @@ void staticResidual(const mechanics::MultibodySystem& system, double t, const Ei
 void staticJacobian(const mechanics::MultibodySystem& system, double t, const Eigen::VectorXd& y,
                     Eigen::MatrixXd& jac, std::vector<int>* activeRows = nullptr);
 
+// de/d(delta pi) of the Euler parameters e for a body-axes virtual rotation delta pi (4 x 3):
+// the chain from body virtual displacements to the residual's coordinates, shared by the
+// static Jacobian and the linearization (linearization.cpp).
+Eigen::Matrix<double, 4, 3> eulerParameterRates(const Eigen::Vector4d& e);
+
 // Applies a Newton correction (6 per body, then one per active multiplier) to y.
 void applyStaticCorrection(const mechanics::MultibodySystem& system,
                            const std::vector<int>& activeRows, const Eigen::VectorXd& delta,

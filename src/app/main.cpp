@@ -80,9 +80,11 @@ int printSummary(const analysis::Session& s, bool ok) {
   const model::Model* m = s.model();
   if (!m) return 1;
   std::printf("OpenMSS: %s\n", m->title.c_str());
-  std::printf("  model:    %d moving parts, %zu joints, %zu motions, %zu SFORCEs, %zu requests; "
+  std::printf("  model:    %d moving parts, %zu joints, %zu motions, %zu force elements, %zu requests; "
               "%d degrees of freedom (Gruebler count %d)\n",
-              m->bodyCount(), m->joints.size(), m->motions.size(), m->sforces.size(),
+              m->bodyCount(), m->joints.size(), m->motions.size(),
+              m->sforces.size() + m->springDampers.size() + m->linearFields.size() +
+                  m->vectorForces.size(),
               m->requests.size(), s.degreesOfFreedom(), s.grueblerDegreesOfFreedom());
   const auto& r = s.summary();
   if (!r.analysis.empty())
@@ -150,8 +152,10 @@ int check(const std::string& path) {
   const mechanics::LoopCount loops = mechanics::countLoops(m);
   auto red = mechanics::removeRedundantConstraints(system, y);
   std::printf("%s: %s\n", path.c_str(), m.title.c_str());
-  std::printf("  %d moving parts, %zu joints, %zu motions, %zu SFORCEs, %zu requests\n",
-              m.bodyCount(), m.joints.size(), m.motions.size(), m.sforces.size(),
+  std::printf("  %d moving parts, %zu joints, %zu motions, %zu force elements, %zu requests\n",
+              m.bodyCount(), m.joints.size(), m.motions.size(),
+              m.sforces.size() + m.springDampers.size() + m.linearFields.size() +
+                  m.vectorForces.size(),
               m.requests.size());
   std::printf("  Gruebler count: %d\n", gruebler);
   std::printf("  loops: %d independent, %s dependent\n", loops.independent,

@@ -14,6 +14,7 @@ bool isConstant(const SyntaxNode& node) {
       return true;
     case NodeKind::Time:
     case NodeKind::Host:
+    case NodeKind::DataCall:  // the data is bound after compilation
       return false;
     case NodeKind::If:
       if (!isConstant(node.children[0])) return false;
@@ -93,6 +94,12 @@ class Compiler {
       }
       case NodeKind::If:
         return emitIf(node);
+      case NodeKind::DataCall: {
+        std::vector<std::uint32_t> args;
+        for (const SyntaxNode& child : node.children) args.push_back(emit(child));
+        return addWith(OpCode::DataCall, args, static_cast<std::uint32_t>(node.dataIndex),
+                       Builtin::Abs);
+      }
       case NodeKind::Number:
         break;
     }
@@ -175,6 +182,7 @@ double foldConstant(const SyntaxNode& node) {
       return child(1 + ifChoice(child(0)));
     case NodeKind::Time:
     case NodeKind::Host:
+    case NodeKind::DataCall:  // never constant (isConstant)
       break;
   }
   return 0.0;

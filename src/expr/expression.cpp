@@ -39,6 +39,7 @@ bool Expression::parse(const std::string& text, const SourceLocation& where,
   const std::size_t hostCount = parsed.hostCalls.size();
   out.program_ = std::make_unique<Program>(text, std::move(parsed.hostCalls),
                                            compileProgram(parsed.root, hostCount));
+  out.program_->setDataCalls(std::move(parsed.dataCalls));
   return true;
 }
 
@@ -53,6 +54,19 @@ const std::vector<HostCall>& Expression::hostCalls() const {
 }
 
 bool Expression::dependsOnTime() const { return program_ && program_->dependsOnTime(); }
+
+const std::vector<DataCall>& Expression::dataCalls() const {
+  static const std::vector<DataCall> kNone;
+  return program_ ? program_->dataCalls() : kNone;
+}
+
+void Expression::bindSpline(std::size_t call, std::shared_ptr<const Spline> spline) {
+  if (program_) program_->bindSpline(call, std::move(spline));
+}
+
+void Expression::bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve) {
+  if (program_) program_->bindCurve(call, std::move(curve));
+}
 
 double Expression::evaluate(const double* hostValues, double time) const {
   return program_ ? program_->evaluate(hostValues, time) : 0.0;

@@ -19,12 +19,29 @@
 
 #include "common/diagnostics.hpp"
 
+namespace openmss {
+class Spline;
+class BSplineCurve;
+}  // namespace openmss
+
 namespace openmss::expr {
 
 struct HostCall {
   std::string name;        // canonical upper-case name: "DM", "JOINT", "ORIENT", "MODE", ...
   std::vector<long> args;  // integer arguments as written; omitted trailing ones are absent
   int column = 0;          // 1-based column of the function name within the expression text
+};
+
+// A function of model data: AKISPL(x, z, id[, iord]), CUBSPL(x, z, id[, iord]) or
+// CURVE(alpha, iord, comp, id). Its real arguments (x, z, alpha) are expressions compiled into
+// the program; the id and flags are integer constants kept here. Each call is bound to its data
+// after parsing (Expression::bindSpline / bindCurve); an unbound call evaluates to NaN.
+struct DataCall {
+  std::string name;   // "AKISPL", "CUBSPL" or "CURVE"
+  long id = 0;        // SPLINE or CURVE id
+  int order = 0;      // iord: 0 value, 1 first, 2 second derivative (in x or alpha)
+  int component = 0;  // CURVE: 1, 2, 3 = x, y, z; 0 otherwise
+  int column = 0;     // 1-based column of the function name within the expression text
 };
 
 // Value and first two time derivatives of an expression that depends on TIME only.
@@ -61,6 +78,13 @@ class Expression {
   const std::vector<HostCall>& hostCalls() const;
   bool dependsOnTime() const;
 
+  // Data calls in order of appearance, and their binding to model data. The expression shares
+  // ownership of the data, so it stays valid however the model is copied or moved. Evaluation
+  // calls the data through a plain pointer (no virtual call, no allocation).
+  const std::vector<DataCall>& dataCalls() const;
+  void bindSpline(std::size_t call, std::shared_ptr<const Spline> spline);
+  void bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve);
+
   // Value. hostValues has hostCalls().size() entries. No allocation.
   double evaluate(const double* hostValues, double time) const;
 
@@ -70,6 +94,7 @@ class Expression {
 
   // For expressions without host calls: value and first and second derivatives in TIME
   // (MOTION functions need velocity and acceleration). Precondition: hostCalls().empty().
+  // Data calls are allowed (AKISPL(TIME, 0, id)): their second derivative in x enters.
   TimeJet evaluateTimeJet(double time) const;
 
  private:

@@ -21,6 +21,10 @@ NameInfo host(std::string_view name, int minArgs, int maxArgs, std::string_view 
   return {name, NameKind::HostFunction, minArgs, maxArgs, Builtin::Abs, 0.0, usage};
 }
 
+NameInfo dataFunction(std::string_view name, int minArgs, int maxArgs, std::string_view usage) {
+  return {name, NameKind::DataFunction, minArgs, maxArgs, Builtin::Abs, 0.0, usage};
+}
+
 NameInfo hostVariable(std::string_view name) {
   return {name, NameKind::HostVariable, 0, 0, Builtin::Abs, 0.0, name};
 }
@@ -128,8 +132,15 @@ std::vector<NameInfo> buildCatalog() {
     c.push_back(hostVariable(n));
   }
 
-  // Need model data or user code that expressions cannot reach yet.
-  for (std::string_view n : {"AKISPL", "CUBSPL", "CURVE", "INTERP", "DELAY", "INVPSD", "AO", "USER",
+  // Interpolation of SPLINE and CURVE data (digest 3.5): real arguments are expressions, the
+  // id and the flags integer constants.
+  c.push_back(dataFunction("AKISPL", 3, 4, "AKISPL(x, z, id[, iord])"));
+  c.push_back(dataFunction("CUBSPL", 3, 4, "CUBSPL(x, z, id[, iord])"));
+  c.push_back(dataFunction("CURVE", 4, 4, "CURVE(alpha, iord, comp, id)"));
+
+  // Need model data or user code that expressions cannot reach yet (INTERP: its definition was
+  // not found, digest 3.5).
+  for (std::string_view n : {"INTERP", "DELAY", "INVPSD", "AO", "USER",
                              "FXFREQ", "FXMODE"}) {
     c.push_back(unsupported(n));
   }

@@ -18,6 +18,7 @@ enum class NameKind {
   Conditional,   // IF(e1 : e2, e3, e4)
   HostFunction,  // DX(...), JOINT(...), VARVAL(...): value supplied by the host
   HostVariable,  // MODE, HSIZE, ...: zero-argument host calls, written without parentheses
+  DataFunction,  // AKISPL, CUBSPL, CURVE: expression arguments and the id of model data
   Unsupported,   // recognised, refused with "not supported yet" (splines, USER, ...)
   Vector,        // vector-valued (DXYZ, MAG, UV, ...): refused, vectors are not supported yet
 };

@@ -30,7 +30,7 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 bool isCallable(NameKind kind) {
   return kind == NameKind::Builtin || kind == NameKind::Conditional ||
          kind == NameKind::HostFunction || kind == NameKind::Unsupported ||
-         kind == NameKind::Vector;
+         kind == NameKind::Vector || kind == NameKind::DataFunction;
 }
 
 // The closest known name of the wanted sort, when it is close enough to be a likely typo.
@@ -84,6 +84,7 @@ class Parser {
       result.root = std::move(root);
     }
     result.hostCalls = std::move(hostCalls_);
+    result.dataCalls = std::move(dataCalls_);
     result.errors = std::move(errors_);
     return result;
   }
@@ -366,13 +367,15 @@ class Parser {
         return node;
       case NameKind::HostFunction:
         return hostCall(nameToken, *info, args);
+      case NameKind::DataFunction:
+        return dataCall(nameToken, *info, args);
       case NameKind::Unsupported:
         report(nameToken.column,
                nameToken.upper + " " + atColumn(nameToken.column) + " is not supported yet",
                nameToken.upper == "USER"
                    ? "User subroutines are not available yet; write the force as an expression."
-                   : "Splines, curves and other model data are not available to expressions "
-                     "yet.");
+                   : "This function is not available to expressions yet; see "
+                     "docs/expressions.md for the functions available.");
         return node;
       default:
         report(nameToken.column,
@@ -400,6 +403,65 @@ class Parser {
     if (!valid) return node;
     node.kind = NodeKind::Host;
     node.hostIndex = hostIndex(std::move(hostCall));
+    return node;
+  }
+
+  // AKISPL(x, z, id[, iord]), CUBSPL(x, z, id[, iord]), CURVE(alpha, iord, comp, id): x, z and
+  // alpha are expressions; id, iord and comp are integer constants, checked for range here.
+  // The id is resolved against the model's data later (Expression::bindSpline/bindCurve).
+  SyntaxNode dataCall(const Token& nameToken, const NameInfo& info, std::vector<Argument>& args) {
+    SyntaxNode node;
+    node.column = nameToken.column;
+    if (!checkCount(nameToken, info, args.size())) return node;
+    const bool isCurve = nameToken.upper == "CURVE";
+    DataCall call{nameToken.upper, 0, 0, 0, nameToken.column};
+    const std::vector<std::size_t> integers =
+        isCurve ? std::vector<std::size_t>{1, 2, 3} : std::vector<std::size_t>{2, 3};
+    bool valid = true;
+    long values[4] = {0, 0, 0, 0};
+    for (std::size_t k : integers) {
+      if (k >= args.size()) continue;
+      if (!integerConstant(nameToken.upper, static_cast<int>(k) + 1, args[k], values[k])) {
+        valid = false;
+      }
+    }
+    if (!valid) return node;
+    const std::size_t orderAt = isCurve ? 1 : 3;
+    call.id = values[isCurve ? 3 : 2];
+    call.order = static_cast<int>(values[orderAt]);
+    if (call.order < 0 || call.order > 2) {
+      report(args[orderAt].column,
+             nameToken.upper + " argument " + std::to_string(orderAt + 1) + " " +
+                 atColumn(args[orderAt].column) + " (iord) is " + std::to_string(values[orderAt]) +
+                 ", but it must be 0, 1 or 2",
+             "Write 0 for the value, 1 or 2 for the first or second derivative.");
+      valid = false;
+    }
+    if (isCurve) {
+      call.component = static_cast<int>(values[2]);
+      if (call.component < 1 || call.component > 3) {
+        report(args[2].column,
+               "CURVE argument 3 " + atColumn(args[2].column) + " (comp) is " +
+                   std::to_string(values[2]) + ", but it must be 1, 2 or 3",
+               "Write 1, 2 or 3 for the x, y or z component.");
+        valid = false;
+      }
+    }
+    if (call.id <= 0) {
+      const std::size_t at = isCurve ? 3 : 2;
+      report(args[at].column,
+             nameToken.upper + " argument " + std::to_string(at + 1) + " " +
+                 atColumn(args[at].column) + " must be the id of a " +
+                 (isCurve ? "CURVE" : "SPLINE") + " statement",
+             "Write the positive id of the data element.");
+      valid = false;
+    }
+    if (!valid) return node;
+    node.kind = NodeKind::DataCall;
+    node.children.push_back(std::move(args[0].node));
+    if (!isCurve) node.children.push_back(std::move(args[1].node));
+    node.dataIndex = dataCalls_.size();
+    dataCalls_.push_back(std::move(call));
     return node;
   }
 
@@ -463,6 +525,7 @@ class Parser {
   bool ok_ = true;
   std::vector<ExpressionError> errors_;
   std::vector<HostCall> hostCalls_;
+  std::vector<DataCall> dataCalls_;
 };
 
 }  // namespace

@@ -15,6 +15,7 @@ namespace openmss::expr {
 struct ParseResult {
   SyntaxNode root;
   std::vector<HostCall> hostCalls;      // deduplicated, first-appearance order
+  std::vector<DataCall> dataCalls;      // one per call, in order of appearance
   std::vector<ExpressionError> errors;  // empty on success
 
   bool ok() const { return errors.empty(); }

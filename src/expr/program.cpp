@@ -58,11 +58,41 @@ Program::Program(std::string text, std::vector<HostCall> hostCalls, ProgramCode 
 }
 
 Program::Program(const Program& other)
-    : text_(other.text_), hostCalls_(other.hostCalls_), code_(other.code_) {
+    : text_(other.text_),
+      hostCalls_(other.hostCalls_),
+      dataCalls_(other.dataCalls_),
+      bindings_(other.bindings_),
+      code_(other.code_) {
   if (!fitsOnStack()) scratch_ = std::make_unique<Scratch>(code_);
 }
 
 Program::~Program() = default;
+
+void Program::setDataCalls(std::vector<DataCall> calls) {
+  dataCalls_ = std::move(calls);
+  bindings_.assign(dataCalls_.size(), DataBinding{});
+  for (std::size_t k = 0; k < dataCalls_.size(); ++k) {
+    const DataCall& call = dataCalls_[k];
+    DataBinding& b = bindings_[k];
+    b.kind = call.name == "AKISPL"   ? DataBinding::Kind::Akima
+             : call.name == "CUBSPL" ? DataBinding::Kind::Cubic
+                                     : DataBinding::Kind::Curve;
+    b.order = call.order;
+    b.component = call.component > 0 ? call.component - 1 : 0;
+  }
+}
+
+void Program::bindSpline(std::size_t call, std::shared_ptr<const Spline> spline) {
+  DataBinding& b = bindings_.at(call);
+  b.spline = spline.get();
+  b.splineOwner = std::move(spline);
+}
+
+void Program::bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve) {
+  DataBinding& b = bindings_.at(call);
+  b.curve = curve.get();
+  b.curveOwner = std::move(curve);
+}
 
 bool Program::fitsOnStack() const {
   return code_.instructions.size() <= kStackSlots && code_.partialCount <= kStackPartials;
@@ -125,6 +155,14 @@ T Program::forward(T* v, const double* hostValues, const T& time) const {
       case OpCode::Join:
         v[pc] = v[in[static_cast<std::uint32_t>(valueOf(v[in[3]]))]];
         break;
+      case OpCode::DataCall: {
+        // Chain rule through g(x, z) with its exact first and second partials, so time jets of
+        // AKISPL(TIME, ...) carry the spline's own second derivative.
+        const T& a = v[in[0]];
+        const T b = ins.operandCount > 1 ? v[in[1]] : constant<T>(0.0);
+        v[pc] = chain2(a, b, bindings_[ins.aux].partials(valueOf(a), valueOf(b)));
+        break;
+      }
     }
     ++pc;
   }
@@ -247,6 +285,14 @@ double Program::forwardWithPartials(double* v, double* p, std::uint32_t* trace,
         const auto choice = static_cast<std::uint32_t>(v[in[3]]);
         v[pc] = v[in[choice]];
         for (std::uint32_t j = 0; j < 4; ++j) partial[j] = j == choice ? 1.0 : 0.0;
+        break;
+      }
+      case OpCode::DataCall: {
+        const BinaryPartials g =
+            bindings_[ins.aux].partials(v[in[0]], ins.operandCount > 1 ? v[in[1]] : 0.0);
+        v[pc] = g.g;
+        partial[0] = g.ga;
+        if (ins.operandCount > 1) partial[1] = g.gb;
         break;
       }
     }

@@ -16,10 +16,13 @@
 // rather than waiting.
 
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "common/bspline_curve.hpp"
+#include "common/spline.hpp"
 #include "expr/builtin.hpp"
 #include "expr/expression.hpp"
 #include "expr/jet.hpp"
@@ -36,10 +39,40 @@ enum class OpCode : std::uint8_t {
   Multiply,
   Divide,
   Power,
-  Call,    // builtin applied to the operands
-  Branch,  // operand 0 is IF's e1; jumps to jumpTargets[aux + choice], choice 0/1/2 for <0/=0/>0
-  Jump,    // to instruction aux
-  Join,    // operands e2, e3, e4 roots and the Branch; takes the value of the chosen root
+  Call,      // builtin applied to the operands
+  Branch,    // operand 0 is IF's e1; jumps to jumpTargets[aux + choice], choice 0/1/2 for <0/=0/>0
+  Jump,      // to instruction aux
+  Join,      // operands e2, e3, e4 roots and the Branch; takes the value of the chosen root
+  DataCall,  // AKISPL/CUBSPL (operands x, z) or CURVE (operand alpha); data binding aux
+};
+
+// A data call bound to its data. The shared pointers keep the data alive; evaluation goes
+// through the plain pointers and non-virtual member functions.
+struct DataBinding {
+  enum class Kind : std::uint8_t { Akima, Cubic, Curve };
+  Kind kind = Kind::Akima;
+  int order = 0;      // iord
+  int component = 0;  // CURVE: 0, 1, 2
+  const Spline* spline = nullptr;
+  const BSplineCurve* curve = nullptr;
+  std::shared_ptr<const Spline> splineOwner;
+  std::shared_ptr<const BSplineCurve> curveOwner;
+
+  // The call's value g(a, b) (a = x or alpha, b = z) with its first and second partials.
+  BinaryPartials partials(double a, double b) const {
+    if (spline != nullptr) {
+      const SplinePartials p = spline->evaluate(
+          kind == Kind::Akima ? SplineMethod::Akima : SplineMethod::Cubic, a, b, order);
+      return {p.g, p.gx, p.gz, p.gxx, p.gxz, p.gzz};
+    }
+    if (curve != nullptr) {
+      double d[BSplineCurve::kDerivatives];
+      curve->derivatives(a, component, d);
+      return {d[order], d[order + 1], 0.0, d[order + 2], 0.0, 0.0};
+    }
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan, nan, nan, nan};
+  }
 };
 
 struct Instruction {
@@ -81,6 +114,11 @@ class Program {
   double evaluate(const double* hostValues, double time, double* dHost, double* dTime) const;
   TimeJet evaluateTimeJet(double time) const;
 
+  const std::vector<DataCall>& dataCalls() const { return dataCalls_; }
+  void setDataCalls(std::vector<DataCall> calls);
+  void bindSpline(std::size_t call, std::shared_ptr<const Spline> spline);
+  void bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve);
+
   static constexpr std::size_t kStackSlots = 256;
   static constexpr std::size_t kStackPartials = 512;
 
@@ -102,6 +140,8 @@ class Program {
 
   std::string text_;
   std::vector<HostCall> hostCalls_;
+  std::vector<DataCall> dataCalls_;
+  std::vector<DataBinding> bindings_;  // bindings_[k] serves dataCalls_[k]
   ProgramCode code_;
   std::unique_ptr<Scratch> scratch_;  // only for programs too large for the stack arrays
 };

@@ -10,8 +10,15 @@ bool evaluateStandalone(const std::string& text, double time, double* value, dou
   const SourceLocation where{"<command line>", 0, 0};
   Expression expression;
   if (!Expression::parse(text, where, "", diags, expression)) return false;
-  if (!expression.hostCalls().empty()) {
+  if (!expression.hostCalls().empty() || !expression.dataCalls().empty()) {
     for (const HostCall& call : expression.hostCalls()) {
+      diags.error(where, "",
+                  call.name + " " + atColumn(call.column) +
+                      " needs a model, and the calculator evaluates expressions without one",
+                  "Use numbers, constants, TIME and functions such as STEP or POLY.");
+    }
+    // AKISPL, CUBSPL, CURVE read SPLINE or CURVE data, which only a model has.
+    for (const DataCall& call : expression.dataCalls()) {
       diags.error(where, "",
                   call.name + " " + atColumn(call.column) +
                       " needs a model, and the calculator evaluates expressions without one",

@@ -21,6 +21,8 @@ enum class NodeKind {
   Power,     // a ** b
   Call,      // a built-in function, children are the arguments
   If,        // IF(e1 : e2, e3, e4), children in that order
+  DataCall,  // AKISPL, CUBSPL, CURVE: children are the real arguments (x[, z] or alpha),
+             // dataIndex refers to the parser's list of data calls
 };
 
 struct SyntaxNode {
@@ -29,6 +31,7 @@ struct SyntaxNode {
   double number = 0.0;             // Number
   Builtin builtin = Builtin::Abs;  // Call
   std::size_t hostIndex = 0;       // Host
+  std::size_t dataIndex = 0;       // DataCall
   std::vector<SyntaxNode> children;
 };
 

@@ -33,7 +33,8 @@ std::vector<StatementSpec> finalStatementTable() {
   assignAutomaticAbbreviations(t);
   markSupported(t, {"TITLE", "UNITS", "PART", "MARKER", "JOINT", "MOTION", "SFORCE", "ACCGRAV",
                     "REQUEST", "GRAPHICS", "OUTPUT", "END", "SPRINGDAMPER", "BUSHING", "FIELD",
-                    "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC"});
+                    "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC",
+                    "DEBUG"});
   return t;
 }
 
@@ -42,7 +43,7 @@ std::vector<StatementSpec> finalCommandTable() {
   assignAutomaticAbbreviations(t);
   // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
   markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "SIMULATE", "STOP", "FILE", "HELP",
-                    "EQUILIBRIUM", "IC"});
+                    "EQUILIBRIUM", "IC", "LINEAR", "DEBUG"});
   return t;
 }
 

@@ -117,7 +117,99 @@ int ConstraintSet::grueblerCount(const model::Model& model) {
   for (const auto& j : model.joints) count -= equationCount(j.type);
   for (const auto& p : model.jprims) count -= equationCount(p.type);
   count -= static_cast<int>(model.motions.size());
+  count -= static_cast<int>(model.couplers.size() + model.gears.size());
   return count;
+}
+
+namespace {
+
+// Displacement term `pair` of a coupled equation on joint `joint`: the term's reference is the
+// displacement at the data set's configuration, so the equation holds there.
+ConstraintEquation::CoupledTerm coupledTerm(const model::Model& model, int joint, int pair,
+                                            bool rotation, double scale) {
+  const model::Joint& j = model.joints[joint];
+  const Frame<double> f[2] = {dataSetFrame(model, j.iMarker), dataSetFrame(model, j.jMarker)};
+  ConstraintEquation::CoupledTerm t;
+  t.pair = pair;
+  t.rotation = rotation;
+  t.scale = scale;
+  t.reference = rotation ? std::atan2(dot(f[0].a.c[0], f[1].a.c[1]), dot(f[0].a.c[0], f[1].a.c[0]))
+                         : dot(f[1].a.c[2], f[0].p - f[1].p);
+  t.lastAngle = t.reference;
+  return t;
+}
+
+// An equation reading the marker pairs of the given joints (pair k = joint k's I and J).
+ConstraintEquation coupledEquation(const model::Model& model, const std::vector<int>& joints) {
+  ConstraintEquation e;
+  e.kind = ConstraintEquation::Kind::Coupled;
+  e.iMarker = model.joints[joints[0]].iMarker;
+  e.jMarker = model.joints[joints[0]].jMarker;
+  for (size_t k = 1; k < joints.size(); ++k) {
+    e.moreMarkers.push_back(model.joints[joints[k]].iMarker);
+    e.moreMarkers.push_back(model.joints[joints[k]].jMarker);
+  }
+  return e;
+}
+
+// GEAR (docs/theory.md §5b): the velocity of the contact point P (CV origin) carried by gear k
+// relative to the carrier, along z_CV, is c_k q_k' for each displacement q_k of joint k:
+// rotation: c = s zCV.(zJ x (P - O_J)); translation: c = s zCV.zJ, with s = +1 when the gear is
+// the joint's I part (J on the carrier) and -1 otherwise. Equal velocities integrate to
+// c_1 (q_1 - q_1,0) - c_2 (q_2 - q_2,0) = 0, the c_k being constant on the carrier.
+ConstraintEquation gearEquation(const model::Model& model, int index) {
+  const model::Gear& g = model.gears[index];
+  ConstraintEquation e = coupledEquation(model, {g.joints[0], g.joints[1]});
+  e.gear = index;
+  e.label = "common velocity along Zcv";
+  const Frame<double> cv = dataSetFrame(model, g.cvMarker);
+  const int carrier = model.markers[g.cvMarker].part;
+  using JT = model::JointType;
+  for (int k = 0; k < 2; ++k) {
+    const model::Joint& j = model.joints[g.joints[k]];
+    const double sign = model.markers[j.jMarker].part == carrier ? 1.0 : -1.0;
+    const Frame<double> fj = dataSetFrame(model, j.jMarker);
+    const double side = k == 0 ? 1.0 : -1.0;
+    if (j.type == JT::Revolute || j.type == JT::Cylindrical) {
+      const double c = sign * dot(cv.a.c[2], cross(fj.a.c[2], cv.p - fj.p));
+      e.terms.push_back(coupledTerm(model, g.joints[k], k, true, side * c));
+    }
+    if (j.type == JT::Translational || j.type == JT::Cylindrical) {
+      const double c = sign * dot(cv.a.c[2], fj.a.c[2]);
+      e.terms.push_back(coupledTerm(model, g.joints[k], k, false, side * c));
+    }
+  }
+  return e;
+}
+
+}  // namespace
+
+std::vector<ConstraintSet::JointInitialCondition> ConstraintSet::jointInitialConditions(
+    const model::Model& model) {
+  std::vector<JointInitialCondition> out;
+  for (int k = 0; k < static_cast<int>(model.joints.size()); ++k) {
+    const model::Joint& j = model.joints[k];
+    auto add = [&](bool rotation, const std::optional<double>& disp,
+                   const std::optional<double>& vel) {
+      if (!disp && !vel) return;
+      JointInitialCondition ic;
+      ic.equation.kind = rotation ? ConstraintEquation::Kind::MotionRotation
+                                  : ConstraintEquation::Kind::MotionTranslation;
+      ic.equation.axisJ = 2;
+      ic.equation.iMarker = j.iMarker;
+      ic.equation.jMarker = j.jMarker;
+      ic.equation.joint = k;
+      ic.equation.label = rotation ? "initial rotation about Zj" : "initial translation along Zj";
+      ic.hasDisplacement = disp.has_value();
+      ic.displacement = disp.value_or(0.0);
+      ic.hasVelocity = vel.has_value();
+      ic.velocity = vel.value_or(0.0);
+      out.push_back(ic);
+    };
+    add(true, j.icRotation, j.icRotationVelocity);
+    add(false, j.icTranslation, j.icTranslationVelocity);
+  }
+  return out;
 }
 
 ConstraintSet::ConstraintSet(const model::Model& model) {
@@ -236,6 +328,18 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
     }
     eqs_.push_back(e);
   }
+  for (int k = 0; k < static_cast<int>(model.couplers.size()); ++k) {
+    const model::Coupler& c = model.couplers[k];
+    ConstraintEquation e = coupledEquation(model, c.joints);
+    e.coupler = k;
+    e.label = "sum of scaled joint displacements";
+    for (size_t p = 0; p < c.joints.size(); ++p)
+      e.terms.push_back(coupledTerm(model, c.joints[p], static_cast<int>(p), c.rotation[p],
+                                    c.scales[p]));
+    eqs_.push_back(e);
+  }
+  for (int k = 0; k < static_cast<int>(model.gears.size()); ++k)
+    eqs_.push_back(gearEquation(model, k));
 }
 
 std::string ConstraintSet::describe(int k, const model::Model& model) const {
@@ -250,6 +354,10 @@ std::string ConstraintSet::describe(int k, const model::Model& model) const {
     return "JPRIM/" + std::to_string(p.id) + " (" + model::jprimTypeName(p.type) + ") equation " +
            e.label;
   }
+  if (e.coupler >= 0)
+    return "COUPLER/" + std::to_string(model.couplers[e.coupler].id) + " equation " + e.label;
+  if (e.gear >= 0)
+    return "GEAR/" + std::to_string(model.gears[e.gear].id) + " equation " + e.label;
   return "MOTION/" + std::to_string(model.motions[e.motion].id) + " equation " + e.label;
 }
 

@@ -26,6 +26,18 @@ struct ConstraintEquation {
     Convel,             // x_I.y_J + y_I.x_J: mirror symmetry of I and J about the bisecting plane
     RackPin,            // z_J.(P_I - P_J) - ratio * (angle of x_I about z_I from z_J) - offset
     Screw,              // z_J.(P_I - P_J) - ratio * (angle of x_I about z_J from x_J) - offset
+    Coupled,            // sum of terms scale * (joint displacement - reference): COUPLER, GEAR
+  };
+  // Coupled: one joint displacement of marker pair `pair` (0: iMarker, jMarker; 1, 2: the pairs
+  // in moreMarkers), the rotation of x_I about z_J from x_J or the translation z_J.(P_I - P_J),
+  // measured from `reference` (its value at the data set's configuration). Rotations are
+  // unwrapped against `lastAngle`, the last value seen, so that whole turns accumulate.
+  struct CoupledTerm {
+    int pair = 0;
+    bool rotation = true;
+    double scale = 1.0;
+    double reference = 0.0;
+    mutable double lastAngle = 0.0;
   };
   Kind kind = Kind::Point;
   int axisI = 0;
@@ -35,6 +47,12 @@ struct ConstraintEquation {
   int joint = -1;   // index into Model::joints, or -1
   int motion = -1;  // index into Model::motions, or -1
   int jprim = -1;   // index into Model::jprims, or -1
+  int coupler = -1;  // index into Model::couplers, or -1
+  int gear = -1;     // index into Model::gears, or -1
+  // Markers beyond iMarker and jMarker the equation reads (Coupled: I2, J2 [, I3, J3]);
+  // geometry() receives the frames of iMarker, jMarker, then these.
+  std::vector<int> moreMarkers;
+  std::vector<CoupledTerm> terms;
   // RackPin and Screw: travel per radian (PD/2, PITCH/2pi) and the equation's value at the
   // data set's configuration, so that the data set satisfies it; the value is taken modulo
   // one turn's travel (2 pi ratio), which tracks cumulative pinion/screw angles without state.
@@ -42,6 +60,10 @@ struct ConstraintEquation {
   double offset = 0.0;
   std::string label;   // ADAMS-style, e.g. "Zi.Xj", "X (I-J)"
   bool active = true;  // false once found redundant: its multiplier is held at zero
+
+  static constexpr int kMaxMarkers = 6;
+  int markerCount() const { return 2 + static_cast<int>(moreMarkers.size()); }
+  int marker(int s) const { return s == 0 ? iMarker : s == 1 ? jMarker : moreMarkers[s - 2]; }
 };
 
 template <class S>
@@ -65,6 +87,18 @@ class ConstraintSet {
   static int equationCount(model::JPrimType t);
   // 6 (moving parts) - the equations of every joint, joint primitive and motion (seed Table 1).
   static int grueblerCount(const model::Model& model);
+  // The initial-condition equations of the joints (IC, ICTRAN, ICROT displacements): the joint
+  // coordinate minus the given value. They are not part of the DAE; the initial-condition
+  // analysis adds them to the active equations (initial_conditions.hpp). `velocity` is the
+  // given velocity of the same coordinate, or NaN.
+  struct JointInitialCondition {
+    ConstraintEquation equation;  // MotionRotation or MotionTranslation, joint = the joint
+    double displacement = 0.0;
+    double velocity = 0.0;
+    bool hasDisplacement = false;
+    bool hasVelocity = false;
+  };
+  static std::vector<JointInitialCondition> jointInitialConditions(const model::Model& model);
   // True when the equation compares an atan2 angle with a motion target that may grow without
   // bound: the residual takes the difference modulo 2 pi.
   static bool wrapsAngle(const ConstraintEquation& eq) {
@@ -72,17 +106,25 @@ class ConstraintSet {
            (eq.kind == ConstraintEquation::Kind::MotionAngle && eq.axisI != 1);
   }
 
-  // Geometric part of equation k for the given marker frames (motion function not included).
+  // Geometric part of equation k for the given marker frames (motion function not included):
+  // frames[s] is the frame of eq.marker(s), s < eq.markerCount().
   template <class S>
-  static S geometry(const ConstraintEquation& eq, const Frame<S>& i, const Frame<S>& j);
+  static S geometry(const ConstraintEquation& eq, const Frame<S>* frames);
+  template <class S>
+  static S geometry(const ConstraintEquation& eq, const Frame<S>& i, const Frame<S>& j) {
+    const Frame<S> f[2] = {i, j};
+    return geometry(eq, f);
+  }
 
  private:
   std::vector<ConstraintEquation> eqs_;
 };
 
 template <class S>
-S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>& i, const Frame<S>& j) {
+S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) {
   using K = ConstraintEquation::Kind;
+  const Frame<S>& i = frames[0];
+  const Frame<S>& j = frames[1];
   // The value minus whole periods, the period being one turn's travel; the rounding is locally
   // constant, so derivatives pass through unchanged.
   auto modTurn = [&eq](const S& v) {
@@ -118,6 +160,25 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>& i, const
     case K::Screw: {
       const S angle = atan2Of(dot(i.a.c[0], j.a.c[1]), dot(i.a.c[0], j.a.c[0]));
       return modTurn(dot(j.a.c[2], i.p - j.p) - eq.ratio * angle - eq.offset);
+    }
+    case K::Coupled: {
+      S sum(0.0);
+      for (const ConstraintEquation::CoupledTerm& term : eq.terms) {
+        const Frame<S>& fi = frames[2 * term.pair];
+        const Frame<S>& fj = frames[2 * term.pair + 1];
+        S q;
+        if (term.rotation) {
+          q = atan2Of(dot(fi.a.c[0], fj.a.c[1]), dot(fi.a.c[0], fj.a.c[0]));
+          // Whole turns: the rounding is locally constant, derivatives pass through.
+          const double twoPi = 2.0 * std::numbers::pi;
+          q = q + twoPi * std::round((term.lastAngle - valueOf(q)) / twoPi);
+          term.lastAngle = valueOf(q);
+        } else {
+          q = dot(fj.a.c[2], fi.p - fj.p);
+        }
+        sum = sum + term.scale * (q - term.reference);
+      }
+      return sum;
     }
   }
   return S(0.0);

@@ -14,6 +14,9 @@ Eigen::Matrix3d initialAxes(const model::Model& m, int marker) {
 
 ForceElements::ForceElements(const model::Model& model) : model_(&model) {
   layout_.bodies = model.bodyCount();
+  // Functions may read user states (VARVAL, DIF, ...): the user blocks follow the bodies.
+  layout_.userDifferential = model.userDifferentialCount();
+  layout_.userAlgebraic = model.userAlgebraicCount();
   auto add = [&](ForceElementKind kind, size_t n) {
     for (size_t k = 0; k < n; ++k) elements_.push_back({kind, static_cast<int>(k)});
   };

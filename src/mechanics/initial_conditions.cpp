@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/rotation.hpp"
+#include "mechanics/user_state_solve.hpp"
 
 namespace openmss::mechanics {
 
@@ -22,6 +23,25 @@ Eigen::MatrixXd activeConstraintJacobian(const MultibodySystem& system, const do
   if (rows) *rows = active;
   return c;
 }
+
+namespace {
+
+// Appends the rows of the joints' initial conditions to C (after the active equations).
+void appendInitialConditionRows(const MultibodySystem& system, const double* y,
+                                const std::vector<const ConstraintEquation*>& extra,
+                                Eigen::MatrixXd& c) {
+  if (extra.empty()) return;
+  const Eigen::Index base = c.rows();
+  const int cols = 6 * system.layout().bodies;
+  c.conservativeResize(base + static_cast<Eigen::Index>(extra.size()), cols);
+  std::vector<double> row(cols);
+  for (size_t r = 0; r < extra.size(); ++r) {
+    system.constraintRow(*extra[r], y, row.data());
+    for (int j = 0; j < cols; ++j) c(base + static_cast<Eigen::Index>(r), j) = row[j];
+  }
+}
+
+}  // namespace
 
 RedundancyReport removeRedundantConstraints(MultibodySystem& system, const Eigen::VectorXd& y) {
   RedundancyReport report;
@@ -145,6 +165,13 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
       eulerBody[b] = exact[3] || exact[4] || exact[5];
     }
   }
+  // Joint initial displacements: extra equations of this solve (joint coordinate = value).
+  std::vector<ConstraintSet::JointInitialCondition> jointIcs;
+  if (options.holdJointInitialConditions)
+    for (const auto& ic : ConstraintSet::jointInitialConditions(m))
+      if (ic.hasDisplacement) jointIcs.push_back(ic);
+  std::vector<const ConstraintEquation*> icEquations;
+  for (const auto& ic : jointIcs) icEquations.push_back(&ic.equation);
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
   Eigen::MatrixXd scaledJacobian;
   Eigen::MatrixXd transform = Eigen::MatrixXd::Identity(6 * nb, 6 * nb);
@@ -152,8 +179,11 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
     Eigen::VectorXd phi;
     const bool form = it == 0 || options.pattern[static_cast<size_t>(it % 10)];
     Eigen::MatrixXd c;
-    if (form) c = activeConstraintJacobian(system, y.data(), &rows);
-    phi.resize(static_cast<Eigen::Index>(rows.size()));
+    if (form) {
+      c = activeConstraintJacobian(system, y.data(), &rows);
+      appendInitialConditionRows(system, y.data(), icEquations, c);
+    }
+    phi.resize(static_cast<Eigen::Index>(rows.size() + jointIcs.size()));
     result.residual = 0.0;
     for (size_t r = 0; r < rows.size(); ++r) {
       phi(static_cast<Eigen::Index>(r)) = system.constraintValue(rows[r], t, y.data());
@@ -162,12 +192,22 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
         result.worstEquation = rows[r];
       }
     }
+    double icResidual = 0.0;
+    for (size_t r = 0; r < jointIcs.size(); ++r) {
+      const ConstraintSet::JointInitialCondition& ic = jointIcs[r];
+      double v = system.geometryValue(ic.equation, y.data()) - ic.displacement;
+      if (ic.equation.kind == ConstraintEquation::Kind::MotionRotation)
+        v = std::remainder(v, 2.0 * 3.14159265358979323846);
+      phi(static_cast<Eigen::Index>(rows.size() + r)) = v;
+      icResidual = std::max(icResidual, std::abs(v));
+    }
     result.iterations = it;
-    if (result.residual <= options.tolerance) {
+    if (result.residual <= options.tolerance && icResidual <= options.tolerance) {
       result.converged = true;
       break;
     }
-    if (it == options.maxIterations || rows.empty()) break;
+    result.residual = std::max(result.residual, icResidual);
+    if (it == options.maxIterations || phi.size() == 0) break;
     if (form) {
       // Coordinates: body translations, and body-axes rotations or 3-1-3 angle increments;
       // each column scaled by 1/sqrt(weight) so that the minimum-norm solution in the scaled
@@ -217,12 +257,21 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
   return result;
 }
 
-void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y) {
+void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y,
+                     bool holdJointInitialConditions) {
   const StateLayout& l = system.layout();
   const model::Model& m = system.model();
   const int nb = l.bodies;
   std::vector<int> rows;
-  const Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
+  Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
+  // Joint initial velocities: C_ic u = the given rate of the joint coordinate.
+  std::vector<ConstraintSet::JointInitialCondition> jointIcs;
+  if (holdJointInitialConditions)
+    for (const auto& ic : ConstraintSet::jointInitialConditions(m))
+      if (ic.hasVelocity) jointIcs.push_back(ic);
+  std::vector<const ConstraintEquation*> icEquations;
+  for (const auto& ic : jointIcs) icEquations.push_back(&ic.equation);
+  appendInitialConditionRows(system, y.data(), icEquations, c);
   Eigen::VectorXd u0(6 * nb), winv(6 * nb);
   for (int b = 0; b < nb; ++b) {
     const model::Part& p = m.parts[m.movingParts[b]];
@@ -233,13 +282,15 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
       winv(6 * b + 3 + k) = p.angularVelocity[k] ? 1e-6 : 1.0;
     }
   }
-  Eigen::VectorXd rhs(rows.size());
+  Eigen::VectorXd rhs(c.rows());
   for (size_t r = 0; r < rows.size(); ++r) {
     const auto& eq = system.constraints().equations()[rows[r]];
     rhs(static_cast<Eigen::Index>(r)) = eq.motion >= 0 ? system.motionJet(rows[r], t).d1 : 0.0;
   }
+  for (size_t r = 0; r < jointIcs.size(); ++r)
+    rhs(static_cast<Eigen::Index>(rows.size() + r)) = jointIcs[r].velocity;
   Eigen::VectorXd u = u0;
-  if (rows.size() > 0) {
+  if (c.rows() > 0) {
     const Eigen::MatrixXd cw = c * winv.asDiagonal();
     const Eigen::MatrixXd s = cw * c.transpose();
     const Eigen::VectorXd mult = s.completeOrthogonalDecomposition().solve(rhs - c * u0);
@@ -256,6 +307,8 @@ bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd
                         Eigen::VectorXd& yp) {
   const StateLayout& l = system.layout();
   const int nb = l.bodies;
+  // VARIABLE values and DIFF derivatives first: applied forces may read them (§4a).
+  if (!solveUserAlgebraic(system, t, y).converged) return false;
   std::vector<int> rows;
   const Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
   const int nc = static_cast<int>(rows.size());
@@ -295,6 +348,7 @@ bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd
     yp.segment<3>(o + StateLayout::kW) = sol.segment<3>(6 * b + 3);
     y(o + StateLayout::kMu) = 0.0;
   }
+  userStateRates(system, t, y, yp);
   return true;
 }
 

@@ -49,6 +49,9 @@ struct AssemblyOptions {
   // Hold the coordinates PART/EXACT names: they weigh kExactWeight times a free coordinate.
   bool honourExact = false;
   static constexpr double kExactWeight = 1e12;
+  // Hold the joints' initial displacements (JOINT IC=, ICTRAN=, ICROT=) as extra equations of
+  // this solve only (ConstraintSet::jointInitialConditions; they are not part of the DAE).
+  bool holdJointInitialConditions = false;
 };
 
 // Positions: Gauss-Newton with minimum-norm corrections of body positions and orientations.
@@ -65,7 +68,10 @@ void applyBodyCorrection(const StateLayout& layout, const Eigen::VectorXd& delta
 
 // Velocities satisfying C u = Phi_t-terms, changing given velocities as little as possible
 // (a velocity given in the data set weighs 1e6 times an unset one).
-void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y);
+// With holdJointInitialConditions, the joints' initial velocities (second values of IC=,
+// ICTRAN=, ICROT=) are held as extra equations of this solve.
+void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y,
+                     bool holdJointInitialConditions = false);
 
 // Accelerations and multipliers from [M C^T; C 0][u'; lambda] = [Q; gamma]. Fills y' for the
 // integrator (r' = v, e' from w, v', w') and the multipliers in y. Returns false if singular.

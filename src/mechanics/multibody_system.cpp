@@ -9,9 +9,12 @@
 namespace openmss::mechanics {
 
 MultibodySystem::MultibodySystem(const model::Model& model)
-    : model_(&model), constraints_(model), forces_(model) {
+    : model_(&model), constraints_(model), forces_(model), user_(model) {
   layout_.bodies = model.bodyCount();
+  layout_.userDifferential = model.userDifferentialCount();
+  layout_.userAlgebraic = model.userAlgebraicCount();
   layout_.constraintEquations = constraints_.size();
+  user_.setLayout(layout_);
   motionCache_.assign(model.motions.size(),
                       {std::numeric_limits<double>::quiet_NaN(), expr::TimeJet{}});
   for (int p : model.movingParts) {
@@ -39,6 +42,7 @@ Eigen::VectorXd MultibodySystem::initialState() const {
       y(o + StateLayout::kW + c) = p.angularVelocity[c].value_or(0.0);
     }
   }
+  user_.initialValues(y.data());
   return y;
 }
 
@@ -74,7 +78,9 @@ expr::TimeJet MultibodySystem::motionJet(int k, double t) const {
 
 double MultibodySystem::constraintValue(int k, double t, const double* y) const {
   const ConstraintEquation& eq = constraints_.equations()[k];
-  double value = ConstraintSet::geometry(eq, frame(eq.iMarker, y), frame(eq.jMarker, y));
+  Frame<double> frames[ConstraintEquation::kMaxMarkers];
+  equationFrames(eq, y, frames);
+  double value = ConstraintSet::geometry(eq, frames);
   if (eq.motion >= 0) {
     const double target = motionJet(k, t).value;
     value -= target;
@@ -84,9 +90,20 @@ double MultibodySystem::constraintValue(int k, double t, const double* y) const 
 }
 
 void MultibodySystem::constraintRow(int k, const double* y, double* row) const {
+  constraintRow(constraints_.equations()[k], y, row);
+}
+
+double MultibodySystem::geometryValue(const ConstraintEquation& eq, const double* y) const {
+  Frame<double> frames[ConstraintEquation::kMaxMarkers];
+  equationFrames(eq, y, frames);
+  return ConstraintSet::geometry(eq, frames);
+}
+
+void MultibodySystem::constraintRow(const ConstraintEquation& eq, const double* y,
+                                    double* row) const {
   const int nb = layout_.bodies;
   std::vector<double> g(layout_.size(), 0.0);
-  addConstraintForce(constraints_.equations()[k], y, 1.0, g.data());
+  addConstraintForce(eq, y, 1.0, g.data());
   for (int b = 0; b < nb; ++b) {
     for (int c = 0; c < 3; ++c) {
       row[6 * b + c] = g[layout_.body(b) + StateLayout::kV + c];
@@ -101,12 +118,11 @@ void MultibodySystem::constraintRates(int k, const double* y, double* first,
   // zero accelerations, with second-order jets: r(s) = r + s v, A(s) = A exp(s [w]).
   using J = Dual<Dual<double>>;
   const ConstraintEquation& eq = constraints_.equations()[k];
-  Frame<J> f[2];
-  const int markers[2] = {eq.iMarker, eq.jMarker};
-  for (int side = 0; side < 2; ++side) {
-    const model::Marker& mk = model_->markers[markers[side]];
+  Frame<J> f[ConstraintEquation::kMaxMarkers];
+  for (int side = 0; side < eq.markerCount(); ++side) {
+    const model::Marker& mk = model_->markers[eq.marker(side)];
     const int body = model_->parts[mk.part].body;
-    const Frame<double> base = frame(markers[side], y);
+    const Frame<double> base = frame(eq.marker(side), y);
     V3<double> dp(0, 0, 0), ddp(0, 0, 0);
     M3<double> da, dda;
     for (int r = 0; r < 3; ++r) da.c[r] = dda.c[r] = V3<double>(0, 0, 0);
@@ -131,7 +147,7 @@ void MultibodySystem::constraintRates(int k, const double* y, double* first,
                               Dual<double>(da.c[r][c], dda.c[r][c]));
     }
   }
-  const J v = ConstraintSet::geometry(eq, f[0], f[1]);
+  const J v = ConstraintSet::geometry(eq, f);
   *first = v.v.d;
   *second = v.d.d;
 }
@@ -184,15 +200,18 @@ void MultibodySystem::reactionOf(Pick take, int marker, const double* y, Eigen::
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
     const ConstraintEquation& eq = eqs[k];
     if (!eq.active || !take(eq)) continue;
-    const int side = eq.iMarker == marker ? 0 : (eq.jMarker == marker ? 1 : -1);
-    if (side < 0) continue;
     const double lambda = y[layout_.lambda(k)];
-    const Frame<double> frames[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
-    for (int dir = 0; dir < 6; ++dir) {
-      // The constraint force on the part is -C^T lambda; torques in part axes about its origin.
-      const double dphi = virtualDerivative(eq, frames, side, dir, o, am);
-      if (dir < 3) force(dir) -= dphi * lambda;
-      else torque(dir - 3) -= dphi * lambda;
+    Frame<double> frames[ConstraintEquation::kMaxMarkers];
+    equationFrames(eq, y, frames);
+    for (int side = 0; side < eq.markerCount(); ++side) {
+      if (eq.marker(side) != marker) continue;
+      for (int dir = 0; dir < 6; ++dir) {
+        // The constraint force on the part is -C^T lambda; torques in part axes about its
+        // origin.
+        const double dphi = virtualDerivative(eq, frames, side, dir, o, am);
+        if (dir < 3) force(dir) -= dphi * lambda;
+        else torque(dir - 3) -= dphi * lambda;
+      }
     }
   }
   // Torque about the marker origin, in ground.
@@ -209,6 +228,14 @@ std::pair<int, int> MultibodySystem::elementMarkers(ConstraintElement kind, int 
       return {model_->motions[element].iMarker, model_->motions[element].jMarker};
     case ConstraintElement::JPrim:
       return {model_->jprims[element].iMarker, model_->jprims[element].jMarker};
+    case ConstraintElement::Coupler: {
+      const model::Joint& j = model_->joints[model_->couplers[element].joints[0]];
+      return {j.iMarker, j.jMarker};
+    }
+    case ConstraintElement::Gear: {
+      const model::Joint& j = model_->joints[model_->gears[element].joints[0]];
+      return {j.iMarker, j.jMarker};
+    }
   }
   return {-1, -1};
 }
@@ -222,6 +249,8 @@ void MultibodySystem::elementReaction(ConstraintElement kind, int element, int m
           case ConstraintElement::Joint: return eq.joint == element;
           case ConstraintElement::Motion: return eq.motion == element;
           case ConstraintElement::JPrim: return eq.jprim == element;
+          case ConstraintElement::Coupler: return eq.coupler == element;
+          case ConstraintElement::Gear: return eq.gear == element;
         }
         return false;
       },
@@ -233,6 +262,8 @@ void MultibodySystem::constraintReactionBetween(int marker, int other, const dou
                                                 Eigen::Vector3d& torque) const {
   reactionOf(
       [&](const ConstraintEquation& eq) {
+        // A coupling's reaction is not the joints' (ADAMS reports joint reactions only).
+        if (eq.coupler >= 0 || eq.gear >= 0) return false;
         return other < 0 || eq.iMarker == other || eq.jMarker == other;
       },
       marker, y, force, torque);

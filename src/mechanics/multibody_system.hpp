@@ -16,6 +16,7 @@
 #include "mechanics/force_elements.hpp"
 #include "mechanics/measures.hpp"
 #include "mechanics/state_layout.hpp"
+#include "mechanics/user_equations.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
@@ -44,6 +45,9 @@ class MultibodySystem {
   double constraintValue(int k, double t, const double* y) const;
   // Row k of C = dPhi/d(delta r, delta pi) over the moving bodies (6 columns per body).
   void constraintRow(int k, const double* y, double* row) const;
+  // The same for an equation outside the DAE (a joint initial condition), and its geometry.
+  void constraintRow(const ConstraintEquation& eq, const double* y, double* row) const;
+  double geometryValue(const ConstraintEquation& eq, const double* y) const;
   // dPhi_k/dt at velocity u (= C u) and second derivative along u with zero acceleration.
   void constraintRates(int k, const double* y, double* first, double* second) const;
   // Motion function value and time derivatives (equation k must be a motion equation).
@@ -61,7 +65,9 @@ class MultibodySystem {
     elementReaction(motion ? ConstraintElement::Motion : ConstraintElement::Joint, element,
                     marker, y, force, torque);
   }
-  enum class ConstraintElement { Joint, Motion, JPrim };
+  // Coupler and Gear: their one equation's reaction on the part of any marker it reads (ADAMS
+  // has no function for them; JOINT(...) and FORCE requests of the coupled joints leave it out).
+  enum class ConstraintElement { Joint, Motion, JPrim, Coupler, Gear };
   void elementReaction(ConstraintElement kind, int element, int marker, const double* y,
                        Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
   // The I and J markers of a constraint element.
@@ -77,6 +83,8 @@ class MultibodySystem {
   // Every applied force element (SFORCE, SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE,
   // GFORCE): their loads and read-back (mechanics/force_elements.hpp).
   const ForceElements& forceElements() const { return forces_; }
+  // The user equations (VARIABLE, DIFF, LSE, TFSISO): STATIC_HOLD flags, initial values.
+  const UserEquations& userEquations() const { return user_; }
   // Sum of the force elements acting on `marker` (as I, or as J / JFLOAT), restricted to those
   // between `marker` and `other` when other >= 0: force on the marker's part and torque about
   // the marker's origin, ground axes.
@@ -86,14 +94,19 @@ class MultibodySystem {
  private:
   template <class T>
   Frame<T> frame(int marker, const T* y) const;
+  // The frames of every marker the equation reads (eq.markerCount() of them).
+  template <class T>
+  void equationFrames(const ConstraintEquation& eq, const T* y, Frame<T>* out) const {
+    for (int s = 0; s < eq.markerCount(); ++s) out[s] = frame(eq.marker(s), y);
+  }
   template <class T>
   void addConstraintForce(const ConstraintEquation& eq, const T* y, const T& lambda,
                           T* g) const;
   // d(geometry of eq)/d(virtual displacement `dir` of the part that carries marker `side`
-  // (0 = I, 1 = J)): dir 0-2 translate along ground axes, 3-5 turn about the part's own axes.
-  // `origin` and `axes` are that part's frame; `frames` the two marker frames.
+  // (eq.marker(side); 0 = I, 1 = J)): dir 0-2 translate along ground axes, 3-5 turn about the
+  // part's own axes. `origin` and `axes` are that part's frame; `frames` the marker frames.
   template <class T>
-  static T virtualDerivative(const ConstraintEquation& eq, const Frame<T> frames[2], int side,
+  static T virtualDerivative(const ConstraintEquation& eq, const Frame<T>* frames, int side,
                              int dir, const V3<T>& origin, const M3<T>& axes);
   template <class T>
   void addSForces(double t, const T* y, T* g) const;
@@ -112,6 +125,7 @@ class MultibodySystem {
   std::vector<Eigen::Matrix3d> inertia_;   // per body, divided by UCF
   mutable std::vector<double> scratchValues_, scratchGrad_;
   ForceElements forces_;  // applied force elements (one code path for residual and read-back)
+  UserEquations user_;    // VARIABLE, DIFF, LSE, TFSISO rows (docs/theory.md §4a)
   // Last motion target per motion (VELOCITY/ACCELERATION motions integrate f by quadrature;
   // the residual asks for the same time many times per Newton matrix).
   mutable std::vector<std::pair<double, expr::TimeJet>> motionCache_;
@@ -126,11 +140,11 @@ Frame<T> MultibodySystem::frame(int marker, const T* y) const {
 }
 
 template <class T>
-T MultibodySystem::virtualDerivative(const ConstraintEquation& eq, const Frame<T> frames[2],
+T MultibodySystem::virtualDerivative(const ConstraintEquation& eq, const Frame<T>* frames,
                                      int side, int dir, const V3<T>& origin, const M3<T>& axes) {
   using S = Dual<T>;
-  Frame<S> f[2];
-  for (int s = 0; s < 2; ++s)
+  Frame<S> f[ConstraintEquation::kMaxMarkers];
+  for (int s = 0; s < eq.markerCount(); ++s)
     for (int c = 0; c < 3; ++c) {
       f[s].p[c] = S(frames[s].p[c], T(0.0));
       for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(frames[s].a.c[r][c], T(0.0));
@@ -148,16 +162,16 @@ T MultibodySystem::virtualDerivative(const ConstraintEquation& eq, const Frame<T
       for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da[c];
     }
   }
-  return ConstraintSet::geometry(eq, f[0], f[1]).d;
+  return ConstraintSet::geometry(eq, f).d;
 }
 
 template <class T>
 void MultibodySystem::addConstraintForce(const ConstraintEquation& eq, const T* y,
                                          const T& lambda, T* g) const {
-  const Frame<T> frames[2] = {frame(eq.iMarker, y), frame(eq.jMarker, y)};
-  const int markers[2] = {eq.iMarker, eq.jMarker};
-  for (int side = 0; side < 2; ++side) {
-    const int body = model_->parts[model_->markers[markers[side]].part].body;
+  Frame<T> frames[ConstraintEquation::kMaxMarkers];
+  equationFrames(eq, y, frames);
+  for (int side = 0; side < eq.markerCount(); ++side) {
+    const int body = model_->parts[model_->markers[eq.marker(side)].part].body;
     if (body < 0) continue;
     const BodyPose<T> pose = bodyPose(layout_, body, y);
     for (int dir = 0; dir < 6; ++dir) {
@@ -220,6 +234,7 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
     r[StateLayout::kMu] = e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3 - 1.0;
   }
   addSForces(t, y, g);
+  user_.addToResidual(t, y, yp, g);
   const auto& eqs = constraints_.equations();
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
     const ConstraintEquation& eq = eqs[k];
@@ -230,9 +245,9 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
       continue;
     }
     addConstraintForce(eq, y, lambda, g);
-    const Frame<T> fi = frame(eq.iMarker, y);
-    const Frame<T> fj = frame(eq.jMarker, y);
-    T value = ConstraintSet::geometry(eq, fi, fj);
+    Frame<T> frames[ConstraintEquation::kMaxMarkers];
+    equationFrames(eq, y, frames);
+    T value = ConstraintSet::geometry(eq, frames);
     if (eq.motion >= 0) {
       const double target = motionJet(k, t).value;
       value = value - target;

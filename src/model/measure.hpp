@@ -28,6 +28,9 @@ enum class MeasureKind {
   // Model::springDampers, linearFields (BUSH, FIELD, BEAM) or vectorForces (VFORCE...).
   SpringDamperForce, BushingForce, FieldForce, BeamForce, VForceForce, VTorqueForce,
   GForceForce,
+  // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
+  // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
+  VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
 };
 
 struct Measure {

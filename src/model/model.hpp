@@ -5,13 +5,16 @@
 
 #include <array>
 #include <map>
+#include <memory>
 #include <optional>
 #include <string>
 #include <vector>
 
 #include <Eigen/Dense>
 
+#include "common/bspline_curve.hpp"
 #include "common/source_location.hpp"
+#include "common/spline.hpp"
 #include "expr/expression.hpp"
 #include "model/analysis_settings.hpp"
 #include "model/measure.hpp"
@@ -84,6 +87,26 @@ struct JPrim {
   JPrimType type = JPrimType::AtPoint;
   int iMarker = -1;
   int jMarker = -1;
+  SourceLocation where;
+};
+
+// COUPLER: scales[0] q1 + scales[1] q2 [+ scales[2] q3] = 0 on the displacements q of two or
+// three joints (rotation about zJ or translation along zJ of I relative to J, measured from
+// the data set's configuration; docs/theory.md §5b).
+struct Coupler {
+  long id = 0;
+  std::vector<int> joints;    // indices into Model::joints (2 or 3)
+  std::vector<bool> rotation; // per joint: its rotational (true) or translational displacement
+  std::vector<double> scales; // one per joint
+  SourceLocation where;
+};
+
+// GEAR: the contact point (CV marker origin) moves with the same velocity along zCV whether
+// carried by the first or the second joint's gear (docs/theory.md §5b).
+struct Gear {
+  long id = 0;
+  int joints[2] = {-1, -1};  // indices into Model::joints
+  int cvMarker = -1;         // on the carrier: the part both joints share
   SourceLocation where;
 };
 
@@ -165,6 +188,62 @@ struct VectorForce {
   SourceLocation where;
 };
 
+// ---- User equations (docs/theory.md §4a; model/user_equation_builder.cpp) ----
+
+// VARIABLE: an algebraic unknown v with v = FUNCTION(...), read with VARVAL(id).
+struct Variable {
+  long id = 0;
+  std::optional<double> ic;  // starting guess of the initial-condition solve
+  BoundExpression function;
+  SourceLocation where;
+};
+
+// DIFF: a state y with y' = FUNCTION (explicit) or 0 = FUNCTION(y, y', t) (IMPLICIT); DIF(id)
+// reads y and DIF1(id) reads y'.
+struct Diff {
+  long id = 0;
+  bool implicit = false;
+  bool staticHold = false;
+  double ic = 0.0;
+  std::optional<double> icDerivative;  // IMPLICIT: starting guess for y'
+  BoundExpression function;
+  SourceLocation where;
+};
+
+// ARRAY: X (the states of one LSE or TFSISO), U (VARIABLEs read as inputs), Y (outputs of one
+// LSE or TFSISO), IC or plain constants (NUMBERS).
+struct DataArray {
+  enum class Kind { X, U, Y, IC, Constants };
+  long id = 0;
+  Kind kind = Kind::Constants;
+  std::vector<int> variables;  // U: indices into Model::variables
+  std::vector<double> numbers; // IC and constants
+  int size = 0;
+  int owner = -1;              // X and Y: index into Model::linearStates
+  SourceLocation where;
+};
+
+// LSE and TFSISO (as its controllable canonical state-space form): x' = A x + B u,
+// y = C x + D u, with u the VARIABLEs of the U array.
+struct LinearStateElement {
+  enum class Kind { Lse, Tfsiso };
+  long id = 0;
+  Kind kind = Kind::Lse;
+  int xArray = -1, uArray = -1, yArray = -1;  // indices into Model::arrays (-1 = none)
+  Eigen::MatrixXd a, b, c, d;  // b: states x inputs, c: outputs x states, d: outputs x inputs
+  Eigen::VectorXd ic;          // initial states (zero unless LSE IC=)
+  bool staticHold = false;
+  int firstState = -1;  // index of x(1) among the user differential states (after the DIFFs)
+  SourceLocation where;
+};
+
+// PINPUT / POUTPUT: ordered lists of VARIABLEs (indices into Model::variables).
+struct PlantVariables {
+  long id = 0;
+  std::vector<int> variables;
+  SourceLocation where;
+};
+
 struct Request {
   enum class Kind { Displacement, Velocity, Acceleration, Force, Expressions };
   long id = 0;
@@ -177,10 +256,40 @@ struct Request {
   SourceLocation where;
 };
 
+// ---- Data elements: SPLINE, CURVE, MATRIX, STRING (model/data_element_builder.cpp) ----
+// The interpolants are shared with the expressions that call them (AKISPL, CUBSPL, CURVE).
+struct SplineData {
+  long id = 0;
+  std::shared_ptr<const Spline> spline;
+  SourceLocation where;
+};
+struct CurveData {
+  long id = 0;
+  long matrixId = 0;
+  std::shared_ptr<const BSplineCurve> curve;
+  SourceLocation where;
+};
+struct MatrixData {
+  long id = 0;
+  Eigen::MatrixXd values;  // ROWS x COLUMNS
+  SourceLocation where;
+};
+struct StringData {
+  long id = 0;
+  std::string text;
+  SourceLocation where;
+};
+
 struct OutputSettings {
   bool reqsave = false;
   bool grsave = false;
   bool noseparator = false;
+};
+
+// DEBUG statement and command: EPRINT writes the integrator's per-step and per-iteration
+// diagnostics to the .msg (analysis/eprint_log.hpp).
+struct DebugSettings {
+  bool eprint = false;
 };
 
 struct Model {
@@ -193,12 +302,27 @@ struct Model {
   std::vector<Joint> joints;
   std::vector<Motion> motions;
   std::vector<JPrim> jprims;
+  std::vector<Coupler> couplers;  // COUPLER
+  std::vector<Gear> gears;        // GEAR
   std::vector<SForce> sforces;
   std::vector<SpringDamper> springDampers;
   std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM
   std::vector<VectorForce> vectorForces;  // VFORCE, VTORQUE, GFORCE
+  // User equations: VARIABLE, DIFF, ARRAY, LSE/TFSISO, PINPUT, POUTPUT.
+  std::vector<Variable> variables;
+  std::vector<Diff> diffs;
+  std::vector<DataArray> arrays;
+  std::vector<LinearStateElement> linearStates;
+  std::vector<PlantVariables> pinputs, poutputs;
   std::vector<Request> requests;
+  // Data elements (data_element_builder.cpp); the maps give the index of each id.
+  std::vector<SplineData> splines;
+  std::vector<CurveData> curves;
+  std::vector<MatrixData> matrices;
+  std::vector<StringData> strings;
+  std::map<long, int> splineIndex, curveIndex, matrixIndex, stringIndex;
   OutputSettings output;
+  DebugSettings debug;  // DEBUG statement (EPRINT)
   EquilibriumSettings equilibrium;            // EQUILIBRIUM statement (and command)
   InitialConditionSettings initialConditions;  // IC statement (and command)
   std::vector<int> movingParts;  // part index of each moving body, in state order
@@ -208,6 +332,14 @@ struct Model {
   std::map<long, int> jprimIndex;
 
   int bodyCount() const { return static_cast<int>(movingParts.size()); }
+  // User states (mechanics/state_layout.hpp): differential ones are the DIFF states, then the
+  // states of each LSE/TFSISO; algebraic ones the VARIABLEs, then each DIFF's derivative.
+  int userDifferentialCount() const {
+    int n = static_cast<int>(diffs.size());
+    for (const auto& e : linearStates) n += static_cast<int>(e.a.rows());
+    return n;
+  }
+  int userAlgebraicCount() const { return static_cast<int>(variables.size() + diffs.size()); }
 };
 
 }  // namespace openmss::model

@@ -6,8 +6,11 @@
 
 #include "common/rotation.hpp"
 #include "language/schema.hpp"
+#include "model/coupling_builder.hpp"
+#include "model/data_element_builder.hpp"
 #include "model/force_element_builder.hpp"
 #include "model/units_table.hpp"
+#include "model/user_equation_builder.hpp"
 
 namespace openmss::model {
 namespace {
@@ -126,6 +129,22 @@ struct RawMarker {
   std::optional<long> rm;
 };
 
+}  // namespace
+
+// DEBUG statement and command: EPRINT is supported; the other dumps warn and have no effect.
+void applyDebugArguments(const Statement& s, DebugSettings& debug, Diagnostics& diags) {
+  for (const Argument& arg : s.args) {
+    if (arg.name == "EPRINT") debug.eprint = true;
+    else if (arg.name != "LIST")
+      diags.warning(arg.where, s.subject(),
+                    arg.name + " is not supported yet and has no effect on this run",
+                    "Only DEBUG/EPRINT is supported; remove " + arg.name +
+                        " to silence this warning.");
+  }
+}
+
+namespace {
+
 const std::set<std::string>& supportedStatements() {
   static const std::set<std::string> s = {"UNITS",  "PART",     "MARKER",  "JOINT",
                                           "MOTION", "SFORCE",   "ACCGRAV", "REQUEST",
@@ -133,7 +152,14 @@ const std::set<std::string>& supportedStatements() {
                                           "EQUILIBRIUM", "IC", "JPRIM",
                                           // force elements (force_element_builder.cpp)
                                           "SPRINGDAMPER", "BUSHING", "FIELD", "BEAM",
-                                          "VFORCE", "VTORQUE", "GFORCE"};
+                                          "VFORCE", "VTORQUE", "GFORCE",
+                                          // joint couplings (coupling_builder.cpp)
+                                          "COUPLER", "GEAR",
+                                          // user equations (user_equation_builder.cpp)
+                                          "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO",
+                                          "PINPUT", "POUTPUT",
+                                          // integrator diagnostics (DEBUG/EPRINT)
+                                          "DEBUG"};
   return s;
 }
 
@@ -143,6 +169,7 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
                     const std::string& subject, bool forForces, Diagnostics& diags,
                     BoundExpression& out) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
+  if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
   bool ok = true;
   out.measures.clear();
   for (const auto& call : out.expression.hostCalls()) {
@@ -258,6 +285,8 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       if (m.atJ != 0 && m.atJ != 1) fail("the second argument must be 0 (at I) or 1 (at J)", "");
       if (m.component < 1 || m.component > 8)
         fail("the component must be 1 to 8", "1 |F|, 2-4 Fx Fy Fz, 5 |T|, 6-8 Tx Ty Tz.");
+    } else if (bindUserMeasure(model, call, m, fail)) {
+      // VARVAL, DIF, DIF1, ARYVAL, PINVAL, POUVAL (user_equation_builder.cpp)
     } else {
       fail("this function is not supported yet by the solver",
            "Remove it or replace it by a supported function; see README.md for the list.");
@@ -277,17 +306,20 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   model = Model{};
   model.title = dataset.title;
   model.file = dataset.file;
+  buildDataElements(dataset, model, diags);  // SPLINE, CURVE, MATRIX, STRING first
 
   std::vector<RawPart> rawParts;
   std::vector<RawMarker> rawMarkers;
   std::vector<const Statement*> joints, motions, sforces, requests;
   std::vector<const Statement*> jprimStatements;
   std::vector<const Statement*> forceElementStatements;  // SPRINGDAMPER ... GFORCE
+  std::vector<const Statement*> userStatements;  // VARIABLE, DIFF, ARRAY, LSE, TFSISO, ...
+  std::vector<const Statement*> couplingStatements;      // COUPLER, GEAR
   long lastPartId = 0;
 
   for (const Statement& s : dataset.statements) {
     Args a(s, diags);
-    if (!supportedStatements().count(s.name)) {
+    if (!supportedStatements().count(s.name) && !isDataElementStatement(s.name)) {
       diags.error(s.where, s.subject(), s.name + " is not supported yet by the solver",
                   "Remove the statement, or run it with a tool that supports it; README.md "
                   "lists what is supported.");
@@ -354,6 +386,10 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
       sforces.push_back(&s);
     } else if (isForceElementStatement(s.name)) {
       forceElementStatements.push_back(&s);
+    } else if (isUserEquationStatement(s.name)) {
+      userStatements.push_back(&s);
+    } else if (isCouplingStatement(s.name)) {
+      couplingStatements.push_back(&s);
     } else if (s.name == "REQUEST") {
       requests.push_back(&s);
     } else if (s.name == "EQUILIBRIUM") {
@@ -363,6 +399,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     } else if (s.name == "ACCGRAV") {
       model.gravity = Eigen::Vector3d(a.real("IGRAV").value_or(0.0), a.real("JGRAV").value_or(0.0),
                                       a.real("KGRAV").value_or(0.0));
+    } else if (s.name == "DEBUG") {
+      applyDebugArguments(s, model.debug, diags);
     } else if (s.name == "OUTPUT") {
       for (const Argument& arg : s.args) {
         if (arg.name == "REQSAVE") model.output.reqsave = true;
@@ -645,13 +683,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
         icPair("ICTRAN", j.icTranslation, j.icTranslationVelocity);
         icPair("ICROT", j.icRotation, j.icRotationVelocity);
       }
-      // Read and checked above, but the initial-condition analysis does not hold them yet.
-      for (const char* ic : {"IC", "ICTRAN", "ICROT"})
-        if (s->has(ic))
-          diags.error(s->find(ic)->where, s->subject(),
-                      std::string(ic) + ": joint initial conditions are not supported yet",
-                      "Remove it and set the initial configuration with the markers (and the "
-                      "initial velocity with the parts' VX..WZ).");
+      // Held by the initial-condition analysis (mechanics/initial_conditions.cpp).
     }
     if (j.iMarker >= 0 && j.jMarker >= 0 &&
         model.markers[j.iMarker].part == model.markers[j.jMarker].part)
@@ -817,6 +849,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     }
     if (!expr::Expression::parse(f->expression, f->valueWhere, s->subject(), diags, m.function))
       continue;
+    if (!bindDataCalls(model, m.function, f->valueWhere, s->subject(), diags)) continue;
     if (!m.function.hostCalls().empty()) {
       diags.error(f->valueWhere, s->subject(),
                   "a MOTION function may depend on TIME only, but it calls " +
@@ -826,6 +859,10 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     }
     model.motions.push_back(std::move(m));
   }
+
+  // User equations (user_equation_builder.cpp): before any function is bound, since every
+  // function may read them (VARVAL, DIF, ARYVAL, ...).
+  buildUserEquations(userStatements, dataset, model, diags);
 
   // Single-component forces.
   for (const Statement* s : sforces) {
@@ -849,6 +886,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     if (f.iMarker < 0 || f.jMarker < 0) continue;
     model.sforces.push_back(std::move(f));
   }
+  // COUPLER and GEAR (coupling_builder.cpp): after every joint and marker exists.
+  buildCouplings(couplingStatements, model, diags);
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(forceElementStatements, model, markerRef, diags);
   // Bind SFORCE functions after every SFORCE exists (a function may read another SFORCE).
@@ -869,6 +908,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   }
 
   bindForceElementFunctions(forceElementStatements, model, diags);
+  bindUserEquationFunctions(userStatements, model, diags);
 
   // Requests.
   for (const Statement* s : requests) {

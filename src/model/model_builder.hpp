@@ -18,4 +18,7 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
                     const std::string& subject, bool forForces, Diagnostics& diags,
                     BoundExpression& out);
 
+// DEBUG statement or command: EPRINT is supported; other dumps warn and have no effect.
+void applyDebugArguments(const language::Statement& s, DebugSettings& debug, Diagnostics& diags);
+
 }  // namespace openmss::model

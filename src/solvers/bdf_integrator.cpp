@@ -228,7 +228,14 @@ bool BdfIntegrator::advanceTo(double tout) {
     else if (t_ + 2.0 * h > tout) h = 0.5 * (tout - t_);
     bool newtonFailed = false;
     double err = 0.0;
+    using Event = BdfStepInfo::Event;
+    if (stepObserver_)
+      stepObserver_({Event::Attempt, stats_.steps + 1, k_, t_, h, 0.0}, stepObserverUser_);
     if (!attemptStep(h, k_, &newtonFailed, &err)) {
+      if (stepObserver_)
+        stepObserver_({newtonFailed ? Event::CorrectorFailed : Event::ErrorTestFailed,
+                       stats_.steps + 1, k_, t_, h, err},
+                      stepObserverUser_);
       if (newtonFailed) {
         ++stats_.newtonFailures;
         h_ = 0.25 * h;
@@ -252,6 +259,8 @@ bool BdfIntegrator::advanceTo(double tout) {
       continue;
     }
     // Accept.
+    if (stepObserver_)
+      stepObserver_({Event::Accepted, stats_.steps + 1, k_, t_, h, err}, stepObserverUser_);
     t_ += h;
     if (std::abs(t_ - tout) <= eps) t_ = tout;
     y_ = yNew_;

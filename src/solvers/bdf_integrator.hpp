@@ -54,6 +54,17 @@ struct BdfIterationInfo {
   double worstChange;
 };
 
+// Called at every step attempt and at its outcome when set (DEBUG/EPRINT).
+struct BdfStepInfo {
+  enum class Event { Attempt, Accepted, ErrorTestFailed, CorrectorFailed };
+  Event event;
+  long step;         // number of the step attempted: accepted steps so far + 1
+  int order;
+  double time;       // start of the step
+  double stepSize;
+  double errorNorm;  // weighted local error (1 = the tolerance); Accepted, ErrorTestFailed
+};
+
 class BdfIntegrator {
  public:
   BdfIntegrator(DaeProblem& problem, const BdfSettings& settings);
@@ -71,6 +82,10 @@ class BdfIntegrator {
   void setIterationObserver(void (*fn)(const BdfIterationInfo&, void*), void* user) {
     observer_ = fn;
     observerUser_ = user;
+  }
+  void setStepObserver(void (*fn)(const BdfStepInfo&, void*), void* user) {
+    stepObserver_ = fn;
+    stepObserverUser_ = user;
   }
 
  private:
@@ -104,6 +119,8 @@ class BdfIntegrator {
   Eigen::VectorXd yNew_, ypNew_, yPred_, base_, g_, dy_, predictorDiff_;
   void (*observer_)(const BdfIterationInfo&, void*) = nullptr;
   void* observerUser_ = nullptr;
+  void (*stepObserver_)(const BdfStepInfo&, void*) = nullptr;
+  void* stepObserverUser_ = nullptr;
   int lastWorstEq_ = -1, lastWorstVar_ = -1;
   double lastWorstRes_ = 0.0, lastWorstChange_ = 0.0;
 };

@@ -33,6 +33,16 @@ TEST(Standalone, RefusesExpressionsThatNeedAModel) {
             "functions such as STEP or POLY.");
 }
 
+TEST(Standalone, RefusesSplineFunctionsWithoutAModel) {
+  Diagnostics diags;
+  EXPECT_FALSE(evaluateStandalone("AKISPL(0.5, 0, 1)", 0.0, nullptr, nullptr, diags));
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_EQ(format(diags.all()[0]),
+            "<command line>: error: AKISPL at column 1 of the expression needs a model, and the "
+            "calculator evaluates expressions without one. Use numbers, constants, TIME and "
+            "functions such as STEP or POLY.");
+}
+
 TEST(Standalone, ReportsSyntaxErrors) {
   Diagnostics diags;
   EXPECT_FALSE(evaluateStandalone("STEP (TIME,0,0,1,1)", 0.0, nullptr, nullptr, diags));

@@ -65,7 +65,8 @@ TEST(Schema, MarksWhatTheSolverSupports) {
   EXPECT_TRUE(findStatementSpec("END")->solverSupported);
   EXPECT_FALSE(findStatementSpec("CONTACT")->solverSupported);
   EXPECT_TRUE(findCommandSpec("SIMULATE")->solverSupported);
-  EXPECT_FALSE(findCommandSpec("LINEAR")->solverSupported);
+  EXPECT_TRUE(findCommandSpec("LINEAR")->solverSupported);
+  EXPECT_FALSE(findCommandSpec("SAVE")->solverSupported);
   EXPECT_FALSE(findCommandSpec("PART")->solverSupported);
 }
 

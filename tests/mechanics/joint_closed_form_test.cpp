@@ -299,7 +299,7 @@ TEST(JointStatements, UnsupportedAndInvalidArgumentsAreDiagnosed) {
       "JOINT/1, RACKPIN, I=20, J=10\n"                      // PD missing
       "JOINT/2, SCREW, PITCH=0, I=20, J=10\n"               // zero pitch
       "JOINT/3, REVOLUTE, PD=1, I=20, J=10\n"               // PD on a revolute
-      "JOINT/4, REVOLUTE, IC=0.1, I=20, J=10\n"             // joint IC: not supported yet
+      "JOINT/4, SPHERICAL, IC=0.1, I=20, J=10\n"            // IC on a spherical joint
       "JPRIM/5, I=20, J=10\n"                               // type missing
       "MOTION/6, I=20, J=10, FUNCTION=TIME\n"               // direction missing
       "MOTION/7, JOINT=1, I=20, J=10, B1, FUNCTION=TIME\n"  // JOINT and I/J

@@ -1,0 +1,26 @@
+#include "mechanics/user_equations.hpp"
+
+namespace openmss::mechanics {
+
+std::vector<bool> UserEquations::staticHold() const {
+  std::vector<bool> held;
+  for (const model::Diff& d : model_->diffs) held.push_back(d.staticHold);
+  for (const model::LinearStateElement& e : model_->linearStates)
+    for (int i = 0; i < e.a.rows(); ++i) held.push_back(e.staticHold);
+  return held;
+}
+
+void UserEquations::initialValues(double* y) const {
+  const model::Model& m = *model_;
+  const int nv = static_cast<int>(m.variables.size());
+  for (int k = 0; k < nv; ++k) y[layout_.userAlg(k)] = m.variables[k].ic.value_or(0.0);
+  for (int k = 0; k < static_cast<int>(m.diffs.size()); ++k) {
+    y[layout_.userDiff(k)] = m.diffs[k].ic;
+    y[layout_.userAlg(nv + k)] = m.diffs[k].icDerivative.value_or(0.0);
+  }
+  for (const model::LinearStateElement& e : m.linearStates)
+    for (int i = 0; i < e.a.rows(); ++i)
+      y[layout_.userDiff(e.firstState + i)] = i < e.ic.size() ? e.ic(i) : 0.0;
+}
+
+}  // namespace openmss::mechanics

@@ -1,0 +1,311 @@
+#include "model/data_element_builder.hpp"
+
+#include <cmath>
+#include <optional>
+#include <utility>
+#include <vector>
+
+namespace openmss::model {
+namespace {
+
+using language::Argument;
+using language::Statement;
+
+// The numbers of an argument, or nullopt (with a diagnostic) when one of them is a word.
+std::optional<std::vector<double>> numbers(const Statement& s, const Argument& a,
+                                           Diagnostics& diags) {
+  std::vector<double> out;
+  for (const auto& v : a.values) {
+    if (v.kind != language::Value::Kind::Number) {
+      diags.error(v.where.line > 0 ? v.where : a.where, s.subject(),
+                  a.name + " needs numbers, found '" + v.text + "'", "Write numeric constants.");
+      return std::nullopt;
+    }
+    out.push_back(v.number);
+  }
+  return out;
+}
+
+std::optional<long> positiveInteger(const Statement& s, const char* name, Diagnostics& diags) {
+  const Argument* a = s.find(name);
+  if (a == nullptr) return std::nullopt;
+  if (a->values.size() != 1 || a->values[0].kind != language::Value::Kind::Number ||
+      a->values[0].number != std::floor(a->values[0].number) || a->values[0].number <= 0) {
+    diags.error(a->where, s.subject(), std::string(name) + " needs one positive integer",
+                std::string("Write ") + name + "=<integer>.");
+    return std::nullopt;
+  }
+  return static_cast<long>(a->values[0].number);
+}
+
+// Index of the first value that is not above its predecessor, or -1.
+int firstNotIncreasing(const std::vector<double>& v) {
+  for (std::size_t i = 1; i < v.size(); ++i) {
+    if (!(v[i] > v[i - 1])) return static_cast<int>(i);
+  }
+  return -1;
+}
+
+void buildSpline(const Statement& s, Model& model, Diagnostics& diags) {
+  if (s.has("FILE")) {
+    diags.error(s.find("FILE")->where, s.subject(),
+                "SPLINE data from a FILE (BLOCK, CHANNEL) is not supported yet",
+                "List the values in the data set with X=x1,...,xn and Y=y1,...,yn.");
+    return;
+  }
+  const Argument* xArg = s.find("X");
+  std::vector<const Argument*> yArgs;
+  for (const Argument& a : s.args) {
+    if (a.name == "Y") yArgs.push_back(&a);
+  }
+  if (xArg == nullptr || yArgs.empty()) {
+    diags.error(s.where, s.subject(), "a SPLINE needs X= and Y= values",
+                "Write SPLINE/id, X=x1,...,xn, Y=y1,...,yn (n >= 4).");
+    return;
+  }
+  const auto x = numbers(s, *xArg, diags);
+  if (!x) return;
+  bool ok = true;
+  if (x->size() < 4) {
+    diags.error(xArg->where, s.subject(),
+                "X has " + std::to_string(x->size()) + " values, a SPLINE needs at least 4",
+                "Add points: the interpolation methods need four or more.");
+    ok = false;
+  } else if (const int bad = firstNotIncreasing(*x); bad >= 0) {
+    diags.error(xArg->where, s.subject(),
+                "X must increase strictly, but value " + std::to_string(bad + 1) + " (" +
+                    xArg->values[static_cast<std::size_t>(bad)].text +
+                    ") is not above the one before it",
+                "Sort the points by X and remove repeated X values.");
+    ok = false;
+  }
+  const std::size_t n = x->size();
+  std::vector<double> z;
+  std::vector<std::vector<double>> curves;
+  for (const Argument* yArg : yArgs) {
+    auto y = numbers(s, *yArg, diags);
+    if (!y) {
+      ok = false;
+      continue;
+    }
+    if (yArgs.size() == 1 && y->size() == n) {
+      z.push_back(0.0);
+      curves.push_back(std::move(*y));
+    } else if (y->size() == n + 1) {
+      z.push_back(y->front());
+      curves.emplace_back(y->begin() + 1, y->end());
+    } else {
+      diags.error(yArg->where, s.subject(),
+                  "Y has " + std::to_string(y->size()) + " values, but X has " + std::to_string(n) +
+                      " (a curve of a family has " + std::to_string(n + 1) + ": its z first)",
+                  "Give one y per x: Y=y1,...,yn for one curve, or Y=z,y1,...,yn for each "
+                  "curve of a family.");
+      ok = false;
+    }
+  }
+  if (ok && firstNotIncreasing(z) >= 0) {
+    diags.error(yArgs[static_cast<std::size_t>(firstNotIncreasing(z))]->where, s.subject(),
+                "the z values of a family of curves (first value of each Y) must increase",
+                "Order the Y= arguments by increasing z.");
+    ok = false;
+  }
+  if (!ok || !s.id) return;
+  if (model.splineIndex.count(*s.id)) return;  // the reader already warned about duplicates
+  SplineData data;
+  data.id = *s.id;
+  data.where = s.where;
+  data.spline =
+      std::make_shared<const Spline>(*x, std::move(z), curves, s.has("LINEAR_EXTRAPOLATE"));
+  model.splineIndex[data.id] = static_cast<int>(model.splines.size());
+  model.splines.push_back(std::move(data));
+}
+
+void buildMatrix(const Statement& s, Model& model, Diagnostics& diags) {
+  if (s.has("FILE") || s.has("NAME")) {
+    diags.error(s.find(s.has("FILE") ? "FILE" : "NAME")->where, s.subject(),
+                "MATRIX data from a FILE is not supported yet",
+                "List the entries with FULL=RORDER, ROWS=, COLUMNS=, VALUES=.");
+    return;
+  }
+  const auto rows = positiveInteger(s, "ROWS", diags);
+  const auto columns = positiveInteger(s, "COLUMNS", diags);
+  const Argument* valuesArg = s.find("VALUES");
+  const Argument* full = s.find("FULL");
+  const bool sparse = s.has("SPARSE");
+  if (!rows || !columns || valuesArg == nullptr || (full == nullptr) == !sparse) {
+    diags.error(s.where, s.subject(),
+                "a MATRIX needs ROWS=, COLUMNS=, VALUES= and exactly one of FULL= and SPARSE",
+                "Write MATRIX/id, FULL=RORDER, ROWS=m, COLUMNS=n, VALUES=... (m*n values), or "
+                "MATRIX/id, SPARSE, ROWS=m, COLUMNS=n, I=..., J=..., VALUES=....");
+    return;
+  }
+  const auto values = numbers(s, *valuesArg, diags);
+  if (!values) return;
+  Eigen::MatrixXd m = Eigen::MatrixXd::Zero(*rows, *columns);
+  if (full != nullptr) {
+    const bool byRows = !full->values.empty() && full->values[0].text == "RORDER";
+    if (values->size() != static_cast<std::size_t>(*rows * *columns)) {
+      diags.error(valuesArg->where, s.subject(),
+                  "VALUES has " + std::to_string(values->size()) +
+                      " numbers, but ROWS*COLUMNS = " + std::to_string(*rows * *columns),
+                  "Give every entry of the matrix.");
+      return;
+    }
+    for (long i = 0; i < *rows; ++i) {
+      for (long j = 0; j < *columns; ++j) {
+        m(i, j) = (*values)[static_cast<std::size_t>(byRows ? i * *columns + j : j * *rows + i)];
+      }
+    }
+  } else {
+    const Argument* iArg = s.find("I");
+    const Argument* jArg = s.find("J");
+    if (iArg == nullptr || jArg == nullptr || iArg->values.size() != values->size() ||
+        jArg->values.size() != values->size()) {
+      diags.error(valuesArg->where, s.subject(),
+                  "a SPARSE matrix needs I=, J= and VALUES= with the same number of entries",
+                  "Give the row, column and value of every non-zero entry.");
+      return;
+    }
+    for (std::size_t k = 0; k < values->size(); ++k) {
+      const double i = iArg->values[k].number;
+      const double j = jArg->values[k].number;
+      if (i < 1 || i > static_cast<double>(*rows) || j < 1 || j > static_cast<double>(*columns) ||
+          i != std::floor(i) || j != std::floor(j)) {
+        diags.error(iArg->where, s.subject(),
+                    "entry " + std::to_string(k + 1) + " (I=" + iArg->values[k].text +
+                        ", J=" + jArg->values[k].text + ") is outside the " +
+                        std::to_string(*rows) + "x" + std::to_string(*columns) + " matrix",
+                    "Rows and columns count from 1.");
+        return;
+      }
+      m(static_cast<long>(i) - 1, static_cast<long>(j) - 1) = (*values)[k];
+    }
+  }
+  if (!s.id || model.matrixIndex.count(*s.id)) return;
+  model.matrixIndex[*s.id] = static_cast<int>(model.matrices.size());
+  model.matrices.push_back({*s.id, std::move(m), s.where});
+}
+
+// After the matrices: a CURVE refers to one.
+void buildCurve(const Statement& s, Model& model, Diagnostics& diags) {
+  if (s.has("FUNCTION")) {
+    diags.error(s.find("FUNCTION")->where, s.subject(),
+                "FUNCTION=USER(...) curves (CURSUB) are not supported yet",
+                "Define the curve with MATRIX=id (points or B-spline control points).");
+    return;
+  }
+  const auto matrixId = positiveInteger(s, "MATRIX", diags);
+  if (!matrixId) {
+    if (!s.has("MATRIX")) {
+      diags.error(s.where, s.subject(), "a CURVE needs MATRIX=id",
+                  "Give the id of a MATRIX with one row (x, y, z) per point.");
+    }
+    return;
+  }
+  for (const char* name : {"MINPAR", "MAXPAR"}) {
+    if (s.has(name)) {
+      diags.warning(
+          s.find(name)->where, s.subject(),
+          std::string(name) + " has no effect on a MATRIX curve: its parameter runs from -1 to 1",
+          std::string("Remove ") + name + ".");
+    }
+  }
+  const auto found = model.matrixIndex.find(*matrixId);
+  if (found == model.matrixIndex.end()) {
+    diags.error(s.find("MATRIX")->where, s.subject(),
+                "MATRIX/" + std::to_string(*matrixId) + " does not exist",
+                "Use the id of a MATRIX statement of this data set.");
+    return;
+  }
+  const Eigen::MatrixXd& m = model.matrices[static_cast<std::size_t>(found->second)].values;
+  if (m.cols() != 3) {
+    diags.error(s.find("MATRIX")->where, s.subject(),
+                "MATRIX/" + std::to_string(*matrixId) + " has " + std::to_string(m.cols()) +
+                    " columns; a CURVE needs 3 (x, y, z of each point)",
+                "Give the points as rows x, y, z (z = 0 for a planar curve).");
+    return;
+  }
+  long order = 4;
+  if (s.has("ORDER")) {
+    const auto o = positiveInteger(s, "ORDER", diags);
+    if (!o) return;
+    order = *o;
+  }
+  const bool closed = s.has("CLOSED");
+  std::vector<std::array<double, 3>> points;
+  for (Eigen::Index i = 0; i < m.rows(); ++i) points.push_back({m(i, 0), m(i, 1), m(i, 2)});
+  const std::string problem = BSplineCurve::check(points, static_cast<int>(order), closed);
+  if (!problem.empty()) {
+    diags.error(s.where, s.subject(), problem,
+                "Change ORDER, the MATRIX rows or CLOSED so that they agree.");
+    return;
+  }
+  if (!s.id || model.curveIndex.count(*s.id)) return;
+  CurveData data;
+  data.id = *s.id;
+  data.matrixId = *matrixId;
+  data.where = s.where;
+  data.curve = std::make_shared<const BSplineCurve>(points, static_cast<int>(order), closed,
+                                                    s.has("CURVE_POINTS"));
+  model.curveIndex[data.id] = static_cast<int>(model.curves.size());
+  model.curves.push_back(std::move(data));
+}
+
+void buildString(const Statement& s, Model& model) {
+  const Argument* a = s.find("STRING");
+  if (!s.id || model.stringIndex.count(*s.id)) return;
+  StringData data;
+  data.id = *s.id;
+  data.where = s.where;
+  if (a != nullptr && !a->values.empty()) data.text = a->values[0].text;
+  model.stringIndex[data.id] = static_cast<int>(model.strings.size());
+  model.strings.push_back(std::move(data));
+}
+
+}  // namespace
+
+bool isDataElementStatement(const std::string& name) {
+  return name == "SPLINE" || name == "CURVE" || name == "MATRIX" || name == "STRING";
+}
+
+void buildDataElements(const language::Dataset& dataset, Model& model, Diagnostics& diags) {
+  for (const Statement& s : dataset.statements) {
+    if (s.name == "SPLINE") buildSpline(s, model, diags);
+    if (s.name == "MATRIX") buildMatrix(s, model, diags);
+    if (s.name == "STRING") buildString(s, model);
+  }
+  for (const Statement& s : dataset.statements) {
+    if (s.name == "CURVE") buildCurve(s, model, diags);
+  }
+}
+
+bool bindDataCalls(const Model& model, expr::Expression& expression, const SourceLocation& where,
+                   const std::string& subject, Diagnostics& diags) {
+  bool ok = true;
+  const std::vector<expr::DataCall>& calls = expression.dataCalls();
+  for (std::size_t k = 0; k < calls.size(); ++k) {
+    const expr::DataCall& call = calls[k];
+    const bool isCurve = call.name == "CURVE";
+    const std::map<long, int>& index = isCurve ? model.curveIndex : model.splineIndex;
+    const auto found = index.find(call.id);
+    if (found == index.end()) {
+      SourceLocation at = where;
+      if (call.column > 0 && where.column > 0) at.column = where.column + call.column - 1;
+      const std::string kind = isCurve ? "CURVE" : "SPLINE";
+      diags.error(at, subject,
+                  call.name + ": " + kind + "/" + std::to_string(call.id) + " does not exist",
+                  "Use the id of a " + kind + " statement of this data set.");
+      ok = false;
+      continue;
+    }
+    const auto i = static_cast<std::size_t>(found->second);
+    if (isCurve) {
+      expression.bindCurve(k, model.curves[i].curve);
+    } else {
+      expression.bindSpline(k, model.splines[i].spline);
+    }
+  }
+  return ok;
+}
+
+}  // namespace openmss::model
