@@ -329,9 +329,13 @@ bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd
     const double f2 = eq.motion >= 0 ? system.motionJet(rows[r], t).d2 : 0.0;
     rhs(6 * nb + r) = f2 - second;
   }
-  Eigen::FullPivLU<Eigen::MatrixXd> lu(kkt);
-  if (!lu.isInvertible()) return false;
-  const Eigen::VectorXd sol = lu.solve(rhs);
+  // A model of user equations only has no mechanical unknowns: nothing to factor.
+  Eigen::VectorXd sol(0);
+  if (kkt.rows() > 0) {
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(kkt);
+    if (!lu.isInvertible()) return false;
+    sol = lu.solve(rhs);
+  }
   yp = Eigen::VectorXd::Zero(l.size());
   for (int k = 0; k < l.constraintEquations; ++k) y(l.lambda(k)) = 0.0;
   for (int r = 0; r < nc; ++r) y(l.lambda(rows[r])) = sol(6 * nb + r);
