@@ -230,27 +230,30 @@ bool Session::setIntegrator(const language::Statement& c) {
   return ok;
 }
 
+bool Session::reportAssembly(const mechanics::AssemblyResult& r) {
+  const model::Model& m = *model_;
+  for (int b = 0; b < m.bodyCount(); ++b)
+    if (r.partMoves[b] > 1e-9 || r.partTurns[b] > 1e-9)
+      msg_.line("   PART/" + std::to_string(m.parts[m.movingParts[b]].id) + " moved by " +
+                fmt("%.6E", r.partMoves[b]) + " and turned by " + fmt("%.6E", r.partTurns[b]) +
+                " rad to satisfy the constraints");
+  if (r.converged) return true;
+  diags_.error({m.file, 0, 0}, "",
+               "the model cannot be assembled: " +
+                   system_->constraints().describe(r.worstEquation, m) + " is still violated by " +
+                   fmt("%.6E", r.residual) + " after " + std::to_string(r.iterations) +
+                   " iterations",
+               "Check the positions and orientations of that joint's I and J markers.");
+  report(diags_.all().back());
+  return false;
+}
+
 bool Session::initialConditions() {
   const model::Model& m = *model_;
   msg_.line("");
   msg_.line(" Begin initial conditions (time " + fmt("%.6E", t_) + ")");
   auto asm_ = assembleForInitialConditions();  // IC parameters and EXACT (session_statics.cpp)
-  for (int b = 0; b < m.bodyCount(); ++b) {
-    if (asm_.partMoves[b] > 1e-9 || asm_.partTurns[b] > 1e-9)
-      msg_.line("   PART/" + std::to_string(m.parts[m.movingParts[b]].id) + " moved by " +
-                fmt("%.6E", asm_.partMoves[b]) + " and turned by " +
-                fmt("%.6E", asm_.partTurns[b]) + " rad to satisfy the constraints");
-  }
-  if (!asm_.converged) {
-    diags_.error({m.file, 0, 0}, "",
-                 "the model cannot be assembled: " +
-                     system_->constraints().describe(asm_.worstEquation, m) +
-                     " is still violated by " + fmt("%.6E", asm_.residual) + " after " +
-                     std::to_string(asm_.iterations) + " iterations",
-                 "Check the positions and orientations of that joint's I and J markers.");
-    report(diags_.all().back());
-    return false;
-  }
+  if (!reportAssembly(asm_)) return false;
   mechanics::solveVelocities(*system_, t_, y_, /*holdJointInitialConditions=*/true);
   // VARIABLE values and DIFF derivatives (docs/theory.md §4a): a loop without a solution is
   // named here rather than reported as a singular acceleration problem.

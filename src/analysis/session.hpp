@@ -54,6 +54,9 @@ class Session {
   void echoCommand(const std::string& text);
 
  private:
+  // Writes what the position assembly moved to the .msg; reports and returns false when it
+  // could not close the constraints.
+  bool reportAssembly(const mechanics::AssemblyResult& r);
   bool simulate(const language::Statement& command);
   bool setIntegrator(const language::Statement& command);
   bool setOutput(const language::Statement& command);

@@ -247,21 +247,7 @@ bool Session::simulateStaticsOrInitialConditions(const language::Statement& c) {
       msg_.line(" Begin initial conditions (time " + fmt("%.6E", t_) + "), " +
                 (last == 1 ? "displacements" : "displacements and velocities"));
       const mechanics::AssemblyResult r = assembleForInitialConditions();
-      for (int b = 0; b < m.bodyCount(); ++b)
-        if (r.partMoves[b] > 1e-9 || r.partTurns[b] > 1e-9)
-          msg_.line("   PART/" + std::to_string(m.parts[m.movingParts[b]].id) + " moved by " +
-                    fmt("%.6E", r.partMoves[b]) + " and turned by " + fmt("%.6E", r.partTurns[b]) +
-                    " rad to satisfy the constraints");
-      if (!r.converged) {
-        diags_.error({m.file, 0, 0}, "",
-                     "the model cannot be assembled: " +
-                         system_->constraints().describe(r.worstEquation, m) +
-                         " is still violated by " + fmt("%.6E", r.residual) + " after " +
-                         std::to_string(r.iterations) + " iterations",
-                     "Check the positions and orientations of that joint's I and J markers.");
-        report(diags_.all().back());
-        return false;
-      }
+      if (!reportAssembly(r)) return false;
       if (last == 2) mechanics::solveVelocities(*system_, t_, y_);
       // VARIABLE values and DIFF derivatives of the written step (docs/theory.md §4a).
       mechanics::solveUserAlgebraic(*system_, t_, y_);
