@@ -11,44 +11,13 @@
 #include <sstream>
 #include <string>
 
+#include "support/cli_run.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 
-struct Result {
-  int status = -1;
-  std::string output;  // stdout and stderr
-};
-
-fs::path scratch(const std::string& name) {
-  const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
-  fs::path p = fs::temp_directory_path() / ("openmss-cli-" + name + "-" + std::to_string(ticks));
-  fs::create_directories(p);
-  return p;
-}
-
-Result run(const std::string& args, const fs::path& dir) {
-  const fs::path log = dir / "cli.log";
-  const std::string cmd = "cd '" + dir.string() + "' && '" OPENMSS_BINARY "' " + args + " > '" +
-                          log.string() + "' 2>&1";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.output = ss.str();
-  return r;
-}
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+using namespace openmss::testing;  // scratch, run, slurp, write (tests/support)
 
 const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation/adams-joints";
 
