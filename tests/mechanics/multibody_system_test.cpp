@@ -6,6 +6,7 @@
 #include <cmath>
 #include <random>
 
+#include "support/newton_matrix_check.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -57,29 +58,7 @@ TEST(MultibodySystem, NewtonMatrixMatchesCentralDifferences) {
   for (int trial = 0; trial < 3; ++trial) {
     const Eigen::VectorXd y = randomState(s, rng);
     Eigen::VectorXd yp = Eigen::VectorXd::Random(n);
-    const double cj = 37.0, t = 0.123;
-    Eigen::MatrixXd jac;
-    s.newtonMatrix(t, y, yp, cj, jac);
-    // G(y + h e_c, yp + cj h e_c): the corrector's direction.
-    for (int c = 0; c < n; ++c) {
-      const double h = 1e-6 * std::max(1.0, std::abs(y(c)));
-      Eigen::VectorXd yA = y, yB = y, pA = yp, pB = yp;
-      yA(c) += h;
-      yB(c) -= h;
-      if (s.layout().differential(c)) {
-        pA(c) += cj * h;
-        pB(c) -= cj * h;
-      }
-      Eigen::VectorXd gA(n), gB(n);
-      s.residual(t, yA.data(), pA.data(), gA.data());
-      s.residual(t, yB.data(), pB.data(), gB.data());
-      const Eigen::VectorXd fd = (gA - gB) / (2 * h);
-      for (int r = 0; r < n; ++r) {
-        // Central differences are good to about 1e-8 relative here; 1e-6 leaves margin.
-        EXPECT_NEAR(jac(r, c), fd(r), 1e-6 * (1.0 + std::abs(fd(r))))
-            << "row " << r << " column " << c << " trial " << trial;
-      }
-    }
+    testing::checkNewtonMatrix(s, 0.123, y, yp, 37.0, "trial " + std::to_string(trial));
   }
 }
 

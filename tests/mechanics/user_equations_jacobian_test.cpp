@@ -7,6 +7,7 @@
 #include <cmath>
 #include <random>
 
+#include "support/newton_matrix_check.hpp"
 #include "language/reader.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
@@ -76,29 +77,9 @@ TEST(UserEquationsJacobian, NewtonMatrixMatchesCentralDifferences) {
     for (int i = l.userDiff(0); i < l.lambda(0); ++i) y(i) = u(rng);
     for (int k = 0; k < l.constraintEquations; ++k) y(l.lambda(k)) = 10.0 * u(rng);
     const Eigen::VectorXd yp = Eigen::VectorXd::Random(n);
-    const double cj = 37.0, t = 0.123;
     Eigen::MatrixXd jac;
-    s.newtonMatrix(t, y, yp, cj, jac);
-    for (int c = 0; c < n; ++c) {
-      const double h = 1e-6 * std::max(1.0, std::abs(y(c)));
-      Eigen::VectorXd yA = y, yB = y, pA = yp, pB = yp;
-      yA(c) += h;
-      yB(c) -= h;
-      if (l.differential(c)) {
-        pA(c) += cj * h;
-        pB(c) -= cj * h;
-      }
-      Eigen::VectorXd gA(n), gB(n);
-      s.residual(t, yA.data(), pA.data(), gA.data());
-      s.residual(t, yB.data(), pB.data(), gB.data());
-      const Eigen::VectorXd fd = (gA - gB) / (2 * h);
-      for (int r = 0; r < n; ++r) {
-        // Central differences are good to about 1e-8 relative here; 1e-6 leaves margin.
-        EXPECT_NEAR(jac(r, c), fd(r), 1e-6 * (1.0 + std::abs(fd(r))))
-            << "row " << r << " column " << c << " trial " << trial;
-        worst = std::max(worst, std::abs(jac(r, c) - fd(r)) / (1.0 + std::abs(fd(r))));
-      }
-    }
+    worst = std::max(worst, testing::checkNewtonMatrix(s, 0.123, y, yp, 37.0,
+                                                        "trial " + std::to_string(trial), &jac));
     // The user rows do depend on the user unknowns and on the body states.
     EXPECT_NE(jac(l.userAlg(0), l.userAlg(1)), 0.0);
     EXPECT_NE(jac(l.userAlg(0), o + L::kR), 0.0);
