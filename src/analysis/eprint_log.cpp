@@ -5,7 +5,7 @@
 
 namespace openmss::analysis {
 
-void EprintLog::attach(solvers::BdfIntegrator& integrator) {
+void EprintLog::attach(solvers::Integrator& integrator) {
   integrator.setStepObserver(&EprintLog::onStep, this);
   integrator.setIterationObserver(&EprintLog::onIteration, this);
 }

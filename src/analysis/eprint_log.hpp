@@ -14,7 +14,7 @@ class EprintLog {
  public:
   EprintLog(MessageLog& log, const solvers::DaeProblem& problem) : log_(log), problem_(problem) {}
   // Registers the step and iteration observers on `integrator` (which must not outlive this).
-  void attach(solvers::BdfIntegrator& integrator);
+  void attach(solvers::Integrator& integrator);
 
  private:
   static void onStep(const solvers::BdfStepInfo& info, void* self);

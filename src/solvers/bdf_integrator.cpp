@@ -165,10 +165,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       const double size = weightedNorm(dy_, yNew_, false);
       noteWorst(g_, dy_);
       if (!std::isfinite(size)) break;  // a NaN or infinite residual: this attempt failed
-      if (observer_)
-        observer_({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
-                   lastWorstChange_},
-                  observerUser_);
+      notifyIteration({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
+                       lastWorstChange_});
       if (it > 0) rate = size / std::max(previous, 1e-300);
       previous = size;
       // Converged when the remaining change is far below the error tolerance. The corrector
@@ -217,10 +215,11 @@ double BdfIntegrator::orderErrorEstimate(int q, double h) const {
   return fact * std::pow(h, q + 1) * weightedNorm(dd[0], ys_[0], true);
 }
 
-bool BdfIntegrator::advanceTo(double tout) {
+bool BdfIntegrator::step(double tout) {
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
   const double hmin = settings_.hmin > 0 ? settings_.hmin
                                          : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
+  // Attempts until one step is accepted (or the step size falls below HMIN).
   while (t_ < tout - eps) {
     double h = std::min(h_, settings_.hmax);
     // Land exactly on the output time; avoid leaving a sliver for the next step.
@@ -229,13 +228,10 @@ bool BdfIntegrator::advanceTo(double tout) {
     bool newtonFailed = false;
     double err = 0.0;
     using Event = BdfStepInfo::Event;
-    if (stepObserver_)
-      stepObserver_({Event::Attempt, stats_.steps + 1, k_, t_, h, 0.0}, stepObserverUser_);
+    notifyStep({Event::Attempt, stats_.steps + 1, k_, t_, h, 0.0});
     if (!attemptStep(h, k_, &newtonFailed, &err)) {
-      if (stepObserver_)
-        stepObserver_({newtonFailed ? Event::CorrectorFailed : Event::ErrorTestFailed,
-                       stats_.steps + 1, k_, t_, h, err},
-                      stepObserverUser_);
+      notifyStep({newtonFailed ? Event::CorrectorFailed : Event::ErrorTestFailed,
+                  stats_.steps + 1, k_, t_, h, err});
       if (newtonFailed) {
         ++stats_.newtonFailures;
         h_ = 0.25 * h;
@@ -259,8 +255,8 @@ bool BdfIntegrator::advanceTo(double tout) {
       continue;
     }
     // Accept.
-    if (stepObserver_)
-      stepObserver_({Event::Accepted, stats_.steps + 1, k_, t_, h, err}, stepObserverUser_);
+    notifyStep({Event::Accepted, stats_.steps + 1, k_, t_, h, err});
+    lastStepOrder_ = k_;
     t_ += h;
     if (std::abs(t_ - tout) <= eps) t_ = tout;
     y_ = yNew_;
@@ -308,8 +304,41 @@ bool BdfIntegrator::advanceTo(double tout) {
     h_ = std::min(h_, settings_.hmax);
     stats_.order = k_;
     stats_.stepSize = h;
+    return true;
   }
   return true;
+}
+
+void BdfIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const {
+  const int n = std::min(lastStepOrder_ + 1, static_cast<int>(ts_.size()));
+  if (n < 2) {
+    y = y_ + (s - t_) * yp_;
+    yp = yp_;
+    return;
+  }
+  double nodes[8], w[8], dw[8];
+  for (int j = 0; j < n; ++j) nodes[j] = ts_[j];
+  // At a node the Lagrange weights are a unit vector; the derivative still needs the
+  // polynomial, so evaluate a hair away from the node in that case.
+  for (int j = 0; j < n; ++j)
+    if (s == nodes[j]) {
+      if (j == 0) {
+        y = y_;
+        yp = yp_;
+        return;
+      }
+    }
+  double x = s;
+  for (int j = 1; j < n; ++j)
+    if (x == nodes[j]) x = nodes[j] + 1e-9 * (nodes[0] - nodes[j]);
+  lagrangeAt(nodes, n, x, w, dw);
+  y.setZero(y_.size());
+  yp.setZero(y_.size());
+  for (int j = 0; j < n; ++j) {
+    y += w[j] * ys_[j];
+    yp += dw[j] * ys_[j];
+  }
+  if (x != s) y = ys_[static_cast<size_t>(std::find(nodes, nodes + n, s) - nodes)];
 }
 
 }  // namespace openmss::solvers

@@ -11,6 +11,7 @@
 #include <Eigen/Dense>
 
 #include "solvers/dae_problem.hpp"
+#include "solvers/integrator.hpp"
 
 namespace openmss::solvers {
 
@@ -23,70 +24,27 @@ struct BdfSettings {
   int maxit = 10;       // MAXIT: corrector iterations per attempt
 };
 
-struct BdfStatistics {
-  long steps = 0;
-  long rejectedSteps = 0;
-  long newtonFailures = 0;
-  long residualEvaluations = 0;
-  long jacobianEvaluations = 0;
-  int order = 1;
-  double stepSize = 0.0;
-};
+// The names the BDF family used before the common interface (solvers/integrator.hpp).
+using BdfStatistics = IntegratorStatistics;
+using BdfFailure = IntegratorFailure;
+using BdfIterationInfo = IterationInfo;
+using BdfStepInfo = StepInfo;
 
-// What the integrator knew when it gave up (seed: "when, which equation, which variable").
-struct BdfFailure {
-  double time = 0.0;
-  double stepSize = 0.0;
-  std::string reason;
-  int worstEquation = -1;
-  double worstResidual = 0.0;
-  int worstVariable = -1;
-  double worstChange = 0.0;
-};
-
-// Called after every corrector iteration when set (DEBUG/EPRINT).
-struct BdfIterationInfo {
-  double time, stepSize;
-  int order, iteration;
-  int worstEquation;
-  double worstResidual;
-  int worstVariable;
-  double worstChange;
-};
-
-// Called at every step attempt and at its outcome when set (DEBUG/EPRINT).
-struct BdfStepInfo {
-  enum class Event { Attempt, Accepted, ErrorTestFailed, CorrectorFailed };
-  Event event;
-  long step;         // number of the step attempted: accepted steps so far + 1
-  int order;
-  double time;       // start of the step
-  double stepSize;
-  double errorNorm;  // weighted local error (1 = the tolerance); Accepted, ErrorTestFailed
-};
-
-class BdfIntegrator {
+class BdfIntegrator final : public Integrator {
  public:
   BdfIntegrator(DaeProblem& problem, const BdfSettings& settings);
 
-  // Consistent initial values (y0, y'0) at t0.
-  void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0);
-  // Integrates until t == tout exactly. Returns false on failure (see failure()).
-  bool advanceTo(double tout);
+  void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
+  bool step(double tout) override;
 
-  double t() const { return t_; }
-  const Eigen::VectorXd& y() const { return y_; }
-  const Eigen::VectorXd& yp() const { return yp_; }
-  const BdfStatistics& statistics() const { return stats_; }
-  const BdfFailure& failure() const { return failure_; }
-  void setIterationObserver(void (*fn)(const BdfIterationInfo&, void*), void* user) {
-    observer_ = fn;
-    observerUser_ = user;
-  }
-  void setStepObserver(void (*fn)(const BdfStepInfo&, void*), void* user) {
-    stepObserver_ = fn;
-    stepObserverUser_ = user;
-  }
+  double t() const override { return t_; }
+  const Eigen::VectorXd& y() const override { return y_; }
+  const Eigen::VectorXd& yp() const override { return yp_; }
+  double previousTime() const override { return ts_.size() > 1 ? ts_[1] : t_; }
+  // The corrector polynomial of the last step (order k through the last k+1 solutions).
+  void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
+  const IntegratorStatistics& statistics() const override { return stats_; }
+  const IntegratorFailure& failure() const override { return failure_; }
 
  private:
   bool attemptStep(double h, int k, bool* newtonFailed, double* errorNorm);
@@ -106,6 +64,7 @@ class BdfIntegrator {
   double h_ = 0.0;
   int k_ = 1;
   int stepsAtOrder_ = 0;
+  int lastStepOrder_ = 1;  // order of the last accepted step (its interpolant)
 
   // Newton matrix and its factorisation, kept while they serve.
   Eigen::MatrixXd jac_;
@@ -117,10 +76,6 @@ class BdfIntegrator {
 
   // Work vectors (no allocation in the step loop).
   Eigen::VectorXd yNew_, ypNew_, yPred_, base_, g_, dy_, predictorDiff_;
-  void (*observer_)(const BdfIterationInfo&, void*) = nullptr;
-  void* observerUser_ = nullptr;
-  void (*stepObserver_)(const BdfStepInfo&, void*) = nullptr;
-  void* stepObserverUser_ = nullptr;
   int lastWorstEq_ = -1, lastWorstVar_ = -1;
   double lastWorstRes_ = 0.0, lastWorstChange_ = 0.0;
 };
