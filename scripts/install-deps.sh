@@ -6,6 +6,8 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev          # dense linear algebra in the numerical core
+  libsuitesparse-dev     # KLU: sparse LU of large Newton matrices (solvers/klu_linear_solver); SPQR: rank of large constraint Jacobians (mechanics/sparse_constraint_jacobian)
+  libsundials-dev        # IDA (DSTIFF) and CVODE's Adams method (ABAM) integrators
   libgtest-dev libgmock-dev  # unit and validation tests
   libbenchmark-dev       # micro-benchmarks in bench/
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh

@@ -65,4 +65,28 @@ std::string MultibodyDae::variableName(int i) const {
   return "reaction of " + system_.constraints().describe(i - l.lambda(0), m);
 }
 
+const Eigen::SparseMatrix<double>* MultibodyDae::pattern() {
+  if (!havePattern_) {
+    pattern_ = mechanics::newtonMatrixPattern(system_);
+    patternMatrix_ = pattern_.matrix();
+    havePattern_ = true;
+  }
+  return &patternMatrix_;
+}
+
+void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
+                                      const Eigen::VectorXd& yp, double cj,
+                                      Eigen::SparseMatrix<double>& jac) {
+  pattern();
+  if (jac.nonZeros() != pattern_.nonZeros() || jac.rows() != pattern_.size) jac = patternMatrix_;
+  system_.newtonMatrixSparse(t, y, yp, cj, pattern_, jac, work_);
+  const std::vector<int> outside = system_.rowsOutsidePattern(t, y, yp, cj, jac, work_);
+  if (outside.empty()) return;
+  ++repairs_;
+  mechanics::makeRowsDense(pattern_, outside);
+  patternMatrix_ = pattern_.matrix();
+  jac = patternMatrix_;
+  system_.newtonMatrixSparse(t, y, yp, cj, pattern_, jac, work_);
+}
+
 }  // namespace openmss::analysis

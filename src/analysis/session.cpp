@@ -6,8 +6,10 @@
 #include <filesystem>
 
 #include "analysis/eprint_log.hpp"
+#include "analysis/integrator_factory.hpp"
 #include "analysis/multibody_dae.hpp"
 #include "analysis/request_values.hpp"
+#include "analysis/sensor_monitor.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/loop_count.hpp"
@@ -179,7 +181,8 @@ bool Session::execute(const language::Statement& c) {
     return false;
   }
   if (c.name == "SIMULATE") return simulate(c);
-  if (c.name == "INTEGRATOR" || c.name == "GSTIFF") return setIntegrator(c);
+  if (c.name == "INTEGRATOR" || c.name == "GSTIFF" || c.name == "WSTIFF" || c.name == "DSTIFF")
+    return setIntegrator(c);
   if (c.name == "OUTPUT") return setOutput(c);
   if (c.name == "EQUILIBRIUM" || c.name == "IC") return setAnalysisParameters(c);
   if (c.name == "LINEAR") return linear(c);
@@ -203,31 +206,25 @@ bool Session::setOutput(const language::Statement& c) {
   return true;
 }
 
+// INTEGRATOR command, and the FORTRAN-era GSTIFF/WSTIFF/DSTIFF commands that select their
+// method: the same arguments as the statement (model/analysis_settings.cpp). A rejected
+// command leaves the settings as they were.
 bool Session::setIntegrator(const language::Statement& c) {
-  bool ok = true;
-  for (const auto& a : c.args) {
-    if (a.name == "GSTIFF" || a.name == "I3") continue;
-    if (a.name == "ERROR") integrator_.error = a.values.at(0).number;
-    else if (a.name == "HMAX") { integrator_.hmax = a.values.at(0).number; hmaxGiven_ = true; }
-    else if (a.name == "HINIT") { integrator_.hinit = a.values.at(0).number; hinitGiven_ = true; }
-    else if (a.name == "HMIN") integrator_.hmin = a.values.at(0).number;
-    else if (a.name == "KMAX") integrator_.kmax = static_cast<int>(a.values.at(0).number);
-    else if (a.name == "MAXIT") integrator_.maxit = static_cast<int>(a.values.at(0).number);
-    else if (a.name == "DEFAULT") { integrator_ = {}; hmaxGiven_ = hinitGiven_ = false; }
-    else {
-      diags_.error(a.where, c.subject(), a.name + " is not supported yet",
-                   "Supported: GSTIFF with I3, ERROR, HMAX, HINIT, HMIN, KMAX, MAXIT.");
-      report(diags_.all().back());
-      ok = false;
-    }
+  Diagnostics local;
+  model::IntegratorSettings next = model_->integrator;
+  const bool ok = model::applyIntegratorArguments(
+      c, next, local, c.name == "INTEGRATOR" ? nullptr : c.name.c_str());
+  for (const auto& d : local.all()) {
+    diags_.add(d);
+    report(d);
   }
-  for (const auto* bad : {"ERROR", "HMAX", "HINIT", "HMIN"})
-    if (const auto* a = c.find(bad); a && (a->values.empty() || a->values[0].number <= 0)) {
-      diags_.error(a->where, c.subject(), std::string(bad) + " must be positive", "");
-      report(diags_.all().back());
-      ok = false;
-    }
-  return ok;
+  if (!ok) return false;
+  if (const auto why = integratorUnavailable(next)) {
+    error(c, *why, "Choose another integrator (docs/integrators.md).");
+    return false;
+  }
+  model_->integrator = next;
+  return true;
 }
 
 bool Session::reportAssembly(const mechanics::AssemblyResult& r) {
@@ -252,6 +249,7 @@ bool Session::initialConditions() {
   const model::Model& m = *model_;
   msg_.line("");
   msg_.line(" Begin initial conditions (time " + fmt("%.6E", t_) + ")");
+  m.analysisStatus.mode = model::AnalysisMode::InitialConditions;  // MODE = 3
   auto asm_ = assembleForInitialConditions();  // IC parameters and EXACT (session_statics.cpp)
   if (!reportAssembly(asm_)) return false;
   mechanics::solveVelocities(*system_, t_, y_, /*holdJointInitialConditions=*/true);
@@ -384,7 +382,14 @@ bool Session::simulate(const language::Statement& c) {
 
   // DIFF, LSE and TFSISO states must be integrated: a 0-DOF model with them runs dynamics.
   const bool userStates = system_->layout().userDifferential > 0;
-  const bool kinematic = kin || (trans && dof_ == 0 && !userStates);
+  // SENSORs are monitored on the integrator's steps: a 0-DOF model with them runs dynamics.
+  const bool kinematic = kin || (trans && dof_ == 0 && !userStates && m.sensors.empty());
+  if (kin && !m.sensors.empty()) {
+    error(c, "SENSOR events are detected in dynamic analyses only; this model has " +
+                 std::to_string(m.sensors.size()) + " sensor(s)",
+          "Use SIMULATE/TRANSIENT or SIMULATE/DYNAMICS.");
+    return false;
+  }
   if (kin && userStates) {
     error(c, "a kinematic analysis does not integrate DIFF, LSE or TFSISO states; this model "
              "has " + std::to_string(system_->layout().userDifferential),
@@ -405,10 +410,19 @@ bool Session::simulate(const language::Statement& c) {
                    "goes on with a dynamic analysis");
     report(diags_.all().back());
   }
+  // MODE of this analysis (its first output step included); HSIZE, ORDER, NJAC and NRHS count
+  // from zero for each SIMULATE, as the integrator's statistics do.
+  const auto enterAnalysisMode = [&]() {
+    m.analysisStatus.mode =
+        kinematic ? model::AnalysisMode::Kinematics : model::AnalysisMode::Dynamics;
+    m.analysisStatus.clearIntegrator();
+  };
   if (!initialized_) {
     if (!initialConditions()) return false;
+    enterAnalysisMode();
     if (!writeOutputStep(t_, y_, yp_)) return false;
   }
+  enterAnalysisMode();
   msg_.line("");
   msg_.line(" Begin Simulation");
   summary_.analysis = kinematic ? "kinematic" : "dynamic";
@@ -426,6 +440,7 @@ bool Session::simulate(const language::Statement& c) {
     std::fflush(stderr);
   };
 
+  bool halted = false;  // by a SENSOR with HALT
   if (kinematic) {
     msg_.line("  ****** Performing Kinematic Analysis ******");
     for (long i = 1; i <= nOut; ++i) {
@@ -457,26 +472,50 @@ bool Session::simulate(const language::Statement& c) {
       progress(t_, summary_.steps);
     }
   } else {
-    solvers::BdfSettings s = integrator_;
-    if (!hmaxGiven_) s.hmax = outStep;  // GSTIFF's default HMAX is the output step
-    if (!hinitGiven_) s.hinit = std::min(s.hmax, 0.5 * outStep);
-    s.hinit = std::min(s.hinit, s.hmax);
-    msg_.line("  ****** Performing Dynamic Simulation using GSTIFF I3 Integrator ******");
-    msg_.line("   Integration error = " + fmt("%.6E", s.error) + ", HMAX = " + fmt("%.6E", s.hmax) +
-              ", KMAX = " + std::to_string(s.kmax) + ", MAXIT = " + std::to_string(s.maxit));
+    // INTEGRATOR statement/command (analysis/integrator_factory.hpp, docs/integrators.md).
+    if (const auto why = integratorUnavailable(m.integrator)) {
+      error(c, "the dynamic analysis cannot start: " + *why, "Change the INTEGRATOR setting.");
+      return false;
+    }
+    const IntegratorPlan plan = resolveIntegrator(m.integrator, outStep);
+    msg_.line("  ****** Performing Dynamic Simulation using " + integratorBanner(plan) +
+              " Integrator ******");
+    msg_.line(integratorParameters(plan));
     msg_.line("");
     msg_.line("   Simulation      Step        Function    Cumulative   Integration");
     msg_.line("      Time         Size       Evaluations  Steps Taken    Order");
     MultibodyDae dae(*system_);
-    solvers::BdfIntegrator bdf(dae, s);
+    const std::unique_ptr<solvers::Integrator> integrator =
+        makeIntegrator(plan, *system_, dae, *end);
+    solvers::Integrator& bdf = *integrator;
+    // Advice from the method as it appears (ABAM's stiffness warning), each line once.
+    std::size_t warningsShown = 0;
+    auto showIntegratorWarnings = [&]() {
+      const std::vector<std::string> lines = bdf.warnings();
+      for (; warningsShown < lines.size(); ++warningsShown) {
+        diags_.warning({m.file, 0, 0}, "", lines[warningsShown]);
+        report(diags_.all().back());
+      }
+    };
     EprintLog eprint(msg_, dae);  // DEBUG/EPRINT: per step and iteration, to the .msg
     if (m.debug.eprint) eprint.attach(bdf);
     bdf.start(t_, y_, yp_);
+    // SENSOR events (analysis/sensor_monitor.hpp) are checked after every step; a sensor's
+    // DT= moves the output grid.
+    SensorMonitor sensors(*system_);
+    sensors.start(t_, y_, yp_);
+    OutputGrid grid{t0, outStep, *end, 0, nOut};
     const long logEvery = std::max(1L, nOut / 10);
-    for (long i = 1; i <= nOut; ++i) {
-      const double t = (i == nOut) ? *end : t0 + static_cast<double>(i) * outStep;
-      const bool ok = bdf.advanceTo(t);
+    for (long i = 1; i <= grid.count; ++i) {
+      const double t = grid.time(i);
+      const bool ok = sensors.advanceTo(bdf, t);
       const auto& st = bdf.statistics();
+      // HSIZE, ORDER, NJAC, NRHS read by REQUEST functions: the numbers the .msg prints.
+      m.analysisStatus.stepSize = st.stepSize;
+      m.analysisStatus.order = st.order;
+      m.analysisStatus.jacobianEvaluations = st.jacobianEvaluations;
+      m.analysisStatus.residualEvaluations = st.residualEvaluations;
+      showIntegratorWarnings();
       if (!ok) {
         const auto& f = bdf.failure();
         std::string text =
@@ -510,6 +549,20 @@ bool Session::simulate(const language::Statement& c) {
         summary_.time = t_;
         return false;
       }
+      if (const SensorEvent* ev = sensors.event()) {
+        for (const auto& line : describeSensorEvent(m, *ev)) msg_.line(line);
+        if (ev->print || ev->endsSimulation())
+          if (!writeOutputStep(ev->time, ev->y, ev->yp)) return false;
+        if (ev->endsSimulation()) {  // the integrator was restarted at the event
+          t_ = ev->time;
+          y_ = ev->y;
+          halted = ev->halt;
+          break;
+        }
+        if (ev->outputInterval) grid.reschedule(i, ev->time, *ev->outputInterval);
+        --i;  // output i is still ahead
+        continue;
+      }
       t_ = t;
       y_ = bdf.y();
       Eigen::VectorXd yOut = y_, ypOut = bdf.yp();
@@ -520,7 +573,7 @@ bool Session::simulate(const language::Statement& c) {
       summary_.steps = st.steps;
       summary_.jacobians = st.jacobianEvaluations;
       summary_.residuals = st.residualEvaluations;
-      if (i % logEvery == 0 || i == nOut) {
+      if (i % logEvery == 0 || i == grid.count) {
         char buf[160];
         std::snprintf(buf, sizeof buf, "   %12.5E %12.5E %12ld %12ld %8d", t_, st.stepSize,
                       st.residualEvaluations, st.steps, st.order);
@@ -529,10 +582,24 @@ bool Session::simulate(const language::Statement& c) {
       progress(t_, st.steps);
     }
     yp_ = bdf.yp();
+    {  // integrator statistics (docs/integrators.md compares the integrators by these)
+      const auto& st = bdf.statistics();
+      msg_.line("   Integrator statistics: " + std::to_string(st.steps) + " steps, " +
+                std::to_string(st.rejectedSteps) + " rejected, " +
+                std::to_string(st.newtonFailures) + " corrector failures, " +
+                std::to_string(st.jacobianEvaluations) + " Jacobian evaluations, " +
+                std::to_string(st.residualEvaluations) + " residual evaluations");
+    }
   }
   if (options_.progress) std::fprintf(stderr, "\n");
   summary_.time = t_;
   msg_.line(" End Simulation");
+  if (halted) {  // SENSOR/HALT ends the run as STOP does
+    stopped_ = true;
+    msg_.line("");
+    msg_.line(" Finished -----");
+    req_.close();
+  }
   return true;
 }
 

@@ -80,8 +80,6 @@ class Session {
   std::string prefix_;
   std::unique_ptr<model::Model> model_;
   std::unique_ptr<mechanics::MultibodySystem> system_;
-  solvers::BdfSettings integrator_;
-  bool hmaxGiven_ = false, hinitGiven_ = false;
   bool initialized_ = false;
   bool stopped_ = false;
   double t_ = 0.0;

@@ -109,6 +109,8 @@ bool Session::linear(const language::Statement& c) {
     if (!initialConditions()) return false;
     initialized_ = false;
   }
+  model_->analysisStatus.mode = model::AnalysisMode::Linear;  // MODE = 7
+  model_->analysisStatus.clearIntegrator();
   Eigen::VectorXd y = y_, yp = yp_;
   // Multipliers and accelerations consistent with these positions and velocities: the
   // projected linearisation is exact only where the residual vanishes.

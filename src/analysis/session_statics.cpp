@@ -205,6 +205,8 @@ bool Session::simulateStaticsOrInitialConditions(const language::Statement& c) {
         return false;
       }
     summary_.analysis = "initial conditions";
+    m.analysisStatus.mode = model::AnalysisMode::InitialConditions;  // MODE = 3
+    m.analysisStatus.clearIntegrator();
     if (last == 3) {
       if (!initialConditions()) return false;
       // Residual checks of the linear phases against VERROR and AERROR.
@@ -315,6 +317,8 @@ bool Session::simulateStaticsOrInitialConditions(const language::Statement& c) {
             ", TLIMIT = " + fmt("%.3E", e.translationLimit) +
             ", ALIMIT = " + fmt("%.3E", e.angleLimit) + " rad");
   summary_.analysis = end ? "quasi-static" : "static";
+  m.analysisStatus.mode = end ? model::AnalysisMode::QuasiStatics : model::AnalysisMode::Statics;
+  m.analysisStatus.clearIntegrator();
   bool ok = staticEquilibriumAt(t_);
   const double t0 = t_;
   for (long i = 1; ok && i <= nOut; ++i) {

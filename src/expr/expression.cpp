@@ -85,4 +85,8 @@ TimeJet Expression::evaluateTimeJet(double time) const {
   return program_ ? program_->evaluateTimeJet(time) : TimeJet{};
 }
 
+TimeJet Expression::evaluateJet(const TimeJet* hostJets, double time) const {
+  return program_ ? program_->evaluateJet(hostJets, time) : TimeJet{};
+}
+
 }  // namespace openmss::expr

@@ -97,6 +97,11 @@ class Expression {
   // Data calls are allowed (AKISPL(TIME, 0, id)): their second derivative in x enters.
   TimeJet evaluateTimeJet(double time) const;
 
+  // Value and first and second derivatives along one path parameter s, given each host value's
+  // jet along s (hostJets[k] = h_k, dh_k/ds, d2h_k/ds2); TIME is held at `time`. Second
+  // derivatives of constraint equations (GCON) come from two such passes. No allocation.
+  TimeJet evaluateJet(const TimeJet* hostJets, double time) const;
+
  private:
   std::unique_ptr<Program> program_;
 };

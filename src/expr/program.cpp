@@ -4,6 +4,7 @@
 #include <atomic>
 #include <cmath>
 #include <limits>
+#include <type_traits>
 #include <utility>
 
 #include "expr/intrinsics.hpp"
@@ -98,8 +99,21 @@ bool Program::fitsOnStack() const {
   return code_.instructions.size() <= kStackSlots && code_.partialCount <= kStackPartials;
 }
 
+namespace {
+// A host value as a number of type T: plain values are constants, time jets are jets along s.
 template <typename T>
-T Program::forward(T* v, const double* hostValues, const T& time) const {
+T hostNumber(double x) {
+  return constant<T>(x);
+}
+template <typename T>
+T hostNumber(const TimeJet& x) {
+  static_assert(std::is_same_v<T, Jet2>, "host jets feed jet evaluation only");
+  return {x.value, x.d1, x.d2};
+}
+}  // namespace
+
+template <typename T, typename Host>
+T Program::forward(T* v, const Host* hostValues, const T& time) const {
   const Instruction* code = code_.instructions.data();
   const std::uint32_t* operands = code_.operands.data();
   const auto count = static_cast<std::uint32_t>(code_.instructions.size());
@@ -112,7 +126,7 @@ T Program::forward(T* v, const double* hostValues, const T& time) const {
         v[pc] = constant<T>(code_.constants[ins.aux]);
         break;
       case OpCode::LoadHost:
-        v[pc] = constant<T>(hostValues[ins.aux]);
+        v[pc] = hostNumber<T>(hostValues[ins.aux]);
         break;
       case OpCode::LoadTime:
         v[pc] = time;
@@ -361,10 +375,23 @@ TimeJet Program::evaluateTimeJet(double time) const {
   Jet2 result{};
   if (fitsOnStack()) {
     Jet2 values[kStackSlots];
-    result = forward(values, nullptr, t);
+    result = forward(values, static_cast<const double*>(nullptr), t);
   } else {
     ScratchLease lease(*scratch_, code_);
-    result = forward(lease.get().jets.data(), nullptr, t);
+    result = forward(lease.get().jets.data(), static_cast<const double*>(nullptr), t);
+  }
+  return {result.v, result.d1, result.d2};
+}
+
+TimeJet Program::evaluateJet(const TimeJet* hostJets, double time) const {
+  const Jet2 t{time, 0.0, 0.0};
+  Jet2 result{};
+  if (fitsOnStack()) {
+    Jet2 values[kStackSlots];
+    result = forward(values, hostJets, t);
+  } else {
+    ScratchLease lease(*scratch_, code_);
+    result = forward(lease.get().jets.data(), hostJets, t);
   }
   return {result.v, result.d1, result.d2};
 }

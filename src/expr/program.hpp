@@ -113,6 +113,7 @@ class Program {
   double evaluate(const double* hostValues, double time) const;
   double evaluate(const double* hostValues, double time, double* dHost, double* dTime) const;
   TimeJet evaluateTimeJet(double time) const;
+  TimeJet evaluateJet(const TimeJet* hostJets, double time) const;
 
   const std::vector<DataCall>& dataCalls() const { return dataCalls_; }
   void setDataCalls(std::vector<DataCall> calls);
@@ -126,8 +127,8 @@ class Program {
   struct Scratch;
   class ScratchLease;
 
-  template <typename T>
-  T forward(T* values, const double* hostValues, const T& time) const;
+  template <typename T, typename Host>
+  T forward(T* values, const Host* hostValues, const T& time) const;
   double forwardWithPartials(double* values, double* partials, std::uint32_t* trace,
                              std::uint32_t& traceLength, const double* hostValues,
                              double time) const;

@@ -33,7 +33,7 @@ std::vector<StatementSpec> finalStatementTable() {
   assignAutomaticAbbreviations(t);
   markSupported(t, {"TITLE", "UNITS", "PART", "MARKER", "JOINT", "MOTION", "SFORCE", "ACCGRAV",
                     "REQUEST", "GRAPHICS", "OUTPUT", "END", "SPRINGDAMPER", "BUSHING", "FIELD",
-                    "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC",
+                    "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC", "INTEGRATOR",
                     "DEBUG"});
   return t;
 }
@@ -42,8 +42,8 @@ std::vector<StatementSpec> finalCommandTable() {
   auto t = buildCommandTable(buildStatementTable());
   assignAutomaticAbbreviations(t);
   // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
-  markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "SIMULATE", "STOP", "FILE", "HELP",
-                    "EQUILIBRIUM", "IC", "LINEAR", "DEBUG"});
+  markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "WSTIFF", "DSTIFF", "SIMULATE", "STOP",
+                    "FILE", "HELP", "EQUILIBRIUM", "IC", "LINEAR", "DEBUG"});
   return t;
 }
 

@@ -1,5 +1,7 @@
 #include "mechanics/constraint_set.hpp"
 
+#include <algorithm>
+
 namespace openmss::mechanics {
 namespace {
 
@@ -118,6 +120,7 @@ int ConstraintSet::grueblerCount(const model::Model& model) {
   for (const auto& p : model.jprims) count -= equationCount(p.type);
   count -= static_cast<int>(model.motions.size());
   count -= static_cast<int>(model.couplers.size() + model.gears.size());
+  count -= static_cast<int>(model.gcons.size());
   return count;
 }
 
@@ -179,6 +182,39 @@ ConstraintEquation gearEquation(const model::Model& model, int index) {
       e.terms.push_back(coupledTerm(model, g.joints[k], k, false, side * c));
     }
   }
+  return e;
+}
+
+// GCON (docs/theory.md §5c): the markers its measures read become the equation's frame slots
+// (I first when it is read, so the reaction on I is taken from its own slot); an equation
+// needs two slots, so a GCON that reads one marker repeats it (the second slot is unread).
+ConstraintEquation generalEquation(const model::Model& model, int index) {
+  const model::GeneralConstraint& g = model.gcons[index];
+  ConstraintEquation e;
+  e.kind = ConstraintEquation::Kind::General;
+  e.gcon = index;
+  e.function = &g.function;
+  e.label = "FUNCTION=0";
+  std::vector<int> markers;
+  auto slot = [&markers](int marker) {
+    if (marker < 0) return -1;
+    for (size_t s = 0; s < markers.size(); ++s)
+      if (markers[s] == marker) return static_cast<int>(s);
+    markers.push_back(marker);
+    return static_cast<int>(markers.size()) - 1;
+  };
+  const bool readsI = std::any_of(g.function.measures.begin(), g.function.measures.end(),
+                                  [&g](const model::Measure& m) {
+                                    return m.i == g.iMarker || m.j == g.iMarker ||
+                                           m.k == g.iMarker;
+                                  });
+  if (g.iMarker >= 0 && readsI) slot(g.iMarker);
+  for (const model::Measure& m : g.function.measures)
+    e.measureSlots.push_back({slot(m.i), slot(m.j), slot(m.k)});
+  if (markers.size() == 1) markers.push_back(markers[0]);
+  e.iMarker = markers[0];
+  e.jMarker = markers[1];
+  e.moreMarkers.assign(markers.begin() + 2, markers.end());
   return e;
 }
 
@@ -340,6 +376,8 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
   }
   for (int k = 0; k < static_cast<int>(model.gears.size()); ++k)
     eqs_.push_back(gearEquation(model, k));
+  for (int k = 0; k < static_cast<int>(model.gcons.size()); ++k)
+    eqs_.push_back(generalEquation(model, k));
 }
 
 std::string ConstraintSet::describe(int k, const model::Model& model) const {
@@ -358,6 +396,8 @@ std::string ConstraintSet::describe(int k, const model::Model& model) const {
     return "COUPLER/" + std::to_string(model.couplers[e.coupler].id) + " equation " + e.label;
   if (e.gear >= 0)
     return "GEAR/" + std::to_string(model.gears[e.gear].id) + " equation " + e.label;
+  if (e.gcon >= 0)
+    return "GCON/" + std::to_string(model.gcons[e.gcon].id) + " equation " + e.label;
   return "MOTION/" + std::to_string(model.motions[e.motion].id) + " equation " + e.label;
 }
 

@@ -4,6 +4,7 @@
 // written once, templated on the scalar; its Jacobian with respect to body virtual
 // displacements (delta r in ground, delta pi in body axes) comes from forward-mode AD.
 
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <string>
@@ -27,6 +28,7 @@ struct ConstraintEquation {
     RackPin,            // z_J.(P_I - P_J) - ratio * (angle of x_I about z_I from z_J) - offset
     Screw,              // z_J.(P_I - P_J) - ratio * (angle of x_I about z_J from x_J) - offset
     Coupled,            // sum of terms scale * (joint displacement - reference): COUPLER, GEAR
+    General,            // a GCON's FUNCTION of marker measures (general_constraint.hpp)
   };
   // Coupled: one joint displacement of marker pair `pair` (0: iMarker, jMarker; 1, 2: the pairs
   // in moreMarkers), the rotation of x_I about z_J from x_J or the translation z_J.(P_I - P_J),
@@ -49,6 +51,11 @@ struct ConstraintEquation {
   int jprim = -1;   // index into Model::jprims, or -1
   int coupler = -1;  // index into Model::couplers, or -1
   int gear = -1;     // index into Model::gears, or -1
+  int gcon = -1;     // index into Model::gcons, or -1
+  // General: the GCON's bound FUNCTION (owned by the Model) and, per measure k, the frame slots
+  // (indices s of eq.marker(s)) of its markers i, j and k; -1 = ground.
+  const model::BoundExpression* function = nullptr;
+  std::vector<std::array<int, 3>> measureSlots;
   // Markers beyond iMarker and jMarker the equation reads (Coupled: I2, J2 [, I3, J3]);
   // geometry() receives the frames of iMarker, jMarker, then these.
   std::vector<int> moreMarkers;
@@ -120,6 +127,10 @@ class ConstraintSet {
   std::vector<ConstraintEquation> eqs_;
 };
 
+// GCON equations (general_constraint.hpp, included at the end of this header).
+template <class S>
+S generalConstraintValue(const ConstraintEquation& eq, const Frame<S>* frames);
+
 template <class S>
 S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) {
   using K = ConstraintEquation::Kind;
@@ -180,8 +191,13 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
       }
       return sum;
     }
+    case K::General:
+      return generalConstraintValue(eq, frames);
   }
   return S(0.0);
 }
 
 }  // namespace openmss::mechanics
+
+#include "mechanics/general_constraint.hpp"
+

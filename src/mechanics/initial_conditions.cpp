@@ -3,9 +3,16 @@
 #include <cmath>
 
 #include "common/rotation.hpp"
+#include "mechanics/saddle_point_solver.hpp"
+#include "mechanics/sparse_constraint_jacobian.hpp"
 #include "mechanics/user_state_solve.hpp"
 
 namespace openmss::mechanics {
+
+bool usesSparseAlgebra(const MultibodySystem& system, LinearAlgebra method) {
+  if (method == LinearAlgebra::Automatic) return system.layout().bodies >= kSparseFromBodies;
+  return method == LinearAlgebra::Sparse;
+}
 
 Eigen::MatrixXd activeConstraintJacobian(const MultibodySystem& system, const double* y,
                                          std::vector<int>* rows) {
@@ -41,9 +48,73 @@ void appendInitialConditionRows(const MultibodySystem& system, const double* y,
   }
 }
 
+std::vector<int> activeRows(const MultibodySystem& system) {
+  std::vector<int> rows;
+  const auto& eqs = system.constraints().equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k)
+    if (eqs[k].active) rows.push_back(k);
+  return rows;
+}
+
+// Diagonal matrix of `d`, sparse.
+SparseMatrix sparseDiagonal(const Eigen::VectorXd& d) {
+  SparseMatrix m(d.size(), d.size());
+  std::vector<Eigen::Triplet<double>> entries;
+  for (Eigen::Index i = 0; i < d.size(); ++i) entries.emplace_back(i, i, d(i));
+  m.setFromTriplets(entries.begin(), entries.end());
+  return m;
+}
+
+// The mass matrix: per body m I (translations) and the inertia tensor (body-axes rotations).
+SparseMatrix sparseMassMatrix(const MultibodySystem& system) {
+  const int nb = system.layout().bodies;
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(static_cast<size_t>(nb) * 12);
+  for (int b = 0; b < nb; ++b) {
+    for (int c = 0; c < 3; ++c) entries.emplace_back(6 * b + c, 6 * b + c, system.bodyMass(b));
+    const Eigen::Matrix3d& j = system.bodyInertia(b);
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) entries.emplace_back(6 * b + 3 + r, 6 * b + 3 + c, j(r, c));
+  }
+  SparseMatrix m(6 * nb, 6 * nb);
+  m.setFromTriplets(entries.begin(), entries.end());
+  m.makeCompressed();
+  return m;
+}
+
+// Above this many unknowns a failed sparse solve is not retried densely (the dense matrix
+// alone would need (n + m)^2 doubles): the solve reports failure instead.
+constexpr int kDenseRetryLimit = 4000;
+
+RedundancyReport removeRedundantSparse(MultibodySystem& system, const Eigen::VectorXd& y,
+                                       bool* ok) {
+  RedundancyReport report;
+  const std::vector<int> rows = activeRows(system);
+  const SparseMatrix c = sparseConstraintJacobian(system, y.data(), rows);
+  std::vector<bool> dependent;
+  *ok = findDependentRows(c, kRedundancyTolerance, dependent);
+  if (!*ok) return report;
+  auto& eqs = system.constraints().equations();
+  for (size_t r = 0; r < rows.size(); ++r) {
+    if (dependent[r]) {
+      eqs[rows[r]].active = false;
+      report.removed.push_back(rows[r]);
+    } else {
+      ++report.rank;
+    }
+  }
+  return report;
+}
+
 }  // namespace
 
-RedundancyReport removeRedundantConstraints(MultibodySystem& system, const Eigen::VectorXd& y) {
+RedundancyReport removeRedundantConstraints(MultibodySystem& system, const Eigen::VectorXd& y,
+                                            LinearAlgebra method) {
+  if (usesSparseAlgebra(system, method)) {
+    bool ok = false;
+    RedundancyReport sparse = removeRedundantSparse(system, y, &ok);
+    if (ok) return sparse;
+  }
   RedundancyReport report;
   auto& eqs = system.constraints().equations();
   const int nb = system.layout().bodies;
@@ -174,12 +245,40 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
   for (const auto& ic : jointIcs) icEquations.push_back(&ic.equation);
   Eigen::CompleteOrthogonalDecomposition<Eigen::MatrixXd> cod;
   Eigen::MatrixXd scaledJacobian;
-  Eigen::MatrixXd transform = Eigen::MatrixXd::Identity(6 * nb, 6 * nb);
+  Eigen::MatrixXd transform;
+  // Sparse path: the same least-change step from the saddle-point system
+  // [I A^T; A 0] [x; -nu] = [x_target; -phi], A = C T S (the scaled Jacobian), delta = T S x.
+  bool sparse = usesSparseAlgebra(system, options.linearAlgebra);
+  if (sparse) rows = activeRows(system);
+  SaddlePointSolver saddle;
+  SparseMatrix sparseScaled, sparseTransform;
+  bool saddleFactored = false;
+  const SparseMatrix identity = sparseDiagonal(Eigen::VectorXd::Ones(6 * nb));
+  // T S as a sparse matrix: per body the translations' scales, and the rotations' scales or
+  // (EXACT angles) the 3-1-3 rate matrix times the scales.
+  auto formSparseTransform = [&]() {
+    std::vector<Eigen::Triplet<double>> entries;
+    for (int b = 0; b < nb; ++b) {
+      for (int k = 0; k < 3; ++k) entries.emplace_back(6 * b + k, 6 * b + k, columnScale(6 * b + k));
+      if (!eulerBody[b]) {
+        for (int k = 3; k < 6; ++k)
+          entries.emplace_back(6 * b + k, 6 * b + k, columnScale(6 * b + k));
+        continue;
+      }
+      const Eigen::Matrix3d rate = eulerRateMatrix(bodyRotation(l, b, y));
+      for (int r = 0; r < 3; ++r)
+        for (int k = 0; k < 3; ++k)
+          entries.emplace_back(6 * b + 3 + r, 6 * b + 3 + k, rate(r, k) * columnScale(6 * b + 3 + k));
+    }
+    sparseTransform.resize(6 * nb, 6 * nb);
+    sparseTransform.setFromTriplets(entries.begin(), entries.end());
+  };
   for (int it = 0; it <= options.maxIterations; ++it) {
     Eigen::VectorXd phi;
-    const bool form = it == 0 || options.pattern[static_cast<size_t>(it % 10)];
+    const bool form = it == 0 || options.pattern[static_cast<size_t>(it % 10)] ||
+                      (!sparse && transform.size() == 0);  // a dense retry forms afresh
     Eigen::MatrixXd c;
-    if (form) {
+    if (form && !sparse) {
       c = activeConstraintJacobian(system, y.data(), &rows);
       appendInitialConditionRows(system, y.data(), icEquations, c);
     }
@@ -208,10 +307,35 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
     }
     result.residual = std::max(result.residual, icResidual);
     if (it == options.maxIterations || phi.size() == 0) break;
-    if (form) {
+    Eigen::VectorXd delta;
+    if (sparse) {
+      if (form) {
+        formSparseTransform();
+        sparseScaled = sparseConstraintJacobian(system, y.data(), rows, icEquations) *
+                       sparseTransform;
+        saddleFactored = saddle.factor(identity, sparseScaled);
+      }
+      // The same least change as the dense step below; with EXACT coordinates x is nearest
+      // to -z0 (the return to the data set's configuration).
+      Eigen::VectorXd target = Eigen::VectorXd::Zero(6 * nb), x, nu;
+      if (options.honourExact)
+        target = -(columnScale.cwiseInverse().asDiagonal() * totalChange(l, y0, y, eulerBody));
+      if (saddleFactored && saddle.solve(target, -phi, x, nu)) {
+        delta = sparseTransform * x;
+      } else {
+        // Dependent rows at this iterate (a singular position, or joint initial conditions
+        // that repeat a constraint): the dense least-squares step handles them.
+        if (6 * nb + phi.size() > kDenseRetryLimit) break;
+        sparse = false;
+        --it;  // redo this iteration densely (it forms the dense factorisation)
+        continue;
+      }
+    }
+    if (!sparse && form) {
       // Coordinates: body translations, and body-axes rotations or 3-1-3 angle increments;
       // each column scaled by 1/sqrt(weight) so that the minimum-norm solution in the scaled
       // coordinates is the least weighted change.
+      if (transform.size() == 0) transform = Eigen::MatrixXd::Identity(6 * nb, 6 * nb);
       for (int b = 0; b < nb; ++b) {
         if (!eulerBody[b]) continue;
         transform.block<3, 3>(6 * b + 3, 6 * b + 3) = eulerRateMatrix(bodyRotation(l, b, y));
@@ -224,8 +348,9 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
     // the last iterate: each step is the least-squares return to the data projected on the
     // linearised constraints (else a first step forced through an EXACT coordinate by the
     // linearisation would never be undone).
-    Eigen::VectorXd delta;
-    if (options.honourExact) {
+    if (sparse) {
+      // delta is set above
+    } else if (options.honourExact) {
       const Eigen::VectorXd z0 =
           columnScale.cwiseInverse().asDiagonal() * totalChange(l, y0, y, eulerBody);
       const Eigen::VectorXd w = cod.solve(-phi + scaledJacobian * z0);
@@ -258,12 +383,10 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
 }
 
 void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y,
-                     bool holdJointInitialConditions) {
+                     bool holdJointInitialConditions, LinearAlgebra method) {
   const StateLayout& l = system.layout();
   const model::Model& m = system.model();
   const int nb = l.bodies;
-  std::vector<int> rows;
-  Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
   // Joint initial velocities: C_ic u = the given rate of the joint coordinate.
   std::vector<ConstraintSet::JointInitialCondition> jointIcs;
   if (holdJointInitialConditions)
@@ -271,7 +394,18 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
       if (ic.hasVelocity) jointIcs.push_back(ic);
   std::vector<const ConstraintEquation*> icEquations;
   for (const auto& ic : jointIcs) icEquations.push_back(&ic.equation);
-  appendInitialConditionRows(system, y.data(), icEquations, c);
+  std::vector<int> rows;
+  const bool sparse = usesSparseAlgebra(system, method);
+  Eigen::MatrixXd c;
+  SparseMatrix cs;
+  if (sparse) {
+    rows = activeRows(system);
+    cs = sparseConstraintJacobian(system, y.data(), rows, icEquations);
+  } else {
+    c = activeConstraintJacobian(system, y.data(), &rows);
+    appendInitialConditionRows(system, y.data(), icEquations, c);
+  }
+  const Eigen::Index equations = static_cast<Eigen::Index>(rows.size() + jointIcs.size());
   Eigen::VectorXd u0(6 * nb), winv(6 * nb);
   for (int b = 0; b < nb; ++b) {
     const model::Part& p = m.parts[m.movingParts[b]];
@@ -282,7 +416,7 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
       winv(6 * b + 3 + k) = p.angularVelocity[k] ? 1e-6 : 1.0;
     }
   }
-  Eigen::VectorXd rhs(c.rows());
+  Eigen::VectorXd rhs(equations);
   for (size_t r = 0; r < rows.size(); ++r) {
     const auto& eq = system.constraints().equations()[rows[r]];
     rhs(static_cast<Eigen::Index>(r)) = eq.motion >= 0 ? system.motionJet(rows[r], t).d1 : 0.0;
@@ -290,7 +424,25 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
   for (size_t r = 0; r < jointIcs.size(); ++r)
     rhs(static_cast<Eigen::Index>(rows.size() + r)) = jointIcs[r].velocity;
   Eigen::VectorXd u = u0;
-  if (c.rows() > 0) {
+  bool solved = false;
+  if (sparse && equations > 0) {
+    // The least weighted change: [W C^T; C 0] [du; -mult] = [0; rhs - C u0], W = winv^-1.
+    SaddlePointSolver saddle;
+    Eigen::VectorXd du, mult;
+    solved = saddle.factor(sparseDiagonal(winv.cwiseInverse()), cs) &&
+             saddle.solve(Eigen::VectorXd::Zero(6 * nb), rhs - cs * u0, du, mult);
+    if (solved) u = u0 + du;
+  } else if (sparse) {
+    solved = true;
+  }
+  if (!solved && sparse) {
+    // Dependent rows (joint initial velocities that repeat a constraint, a singular position):
+    // the dense least-squares solve below handles them.
+    if (6 * nb + equations > kDenseRetryLimit) return;
+    c = activeConstraintJacobian(system, y.data(), &rows);
+    appendInitialConditionRows(system, y.data(), icEquations, c);
+  }
+  if (!solved && c.rows() > 0) {
     const Eigen::MatrixXd cw = c * winv.asDiagonal();
     const Eigen::MatrixXd s = cw * c.transpose();
     const Eigen::VectorXd mult = s.completeOrthogonalDecomposition().solve(rhs - c * u0);
@@ -304,22 +456,15 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
 }
 
 bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd& y,
-                        Eigen::VectorXd& yp) {
+                        Eigen::VectorXd& yp, LinearAlgebra method) {
   const StateLayout& l = system.layout();
   const int nb = l.bodies;
   // VARIABLE values and DIFF derivatives first: applied forces may read them (§4a).
   if (!solveUserAlgebraic(system, t, y).converged) return false;
-  std::vector<int> rows;
-  const Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
+  std::vector<int> rows = activeRows(system);
   const int nc = static_cast<int>(rows.size());
-  Eigen::MatrixXd mm;
-  system.massMatrix(mm);
   Eigen::VectorXd q;
   system.appliedForces(t, y.data(), q);
-  Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(6 * nb + nc, 6 * nb + nc);
-  kkt.topLeftCorner(6 * nb, 6 * nb) = mm;
-  kkt.topRightCorner(6 * nb, nc) = c.transpose();
-  kkt.bottomLeftCorner(nc, 6 * nb) = c;
   Eigen::VectorXd rhs(6 * nb + nc);
   rhs.head(6 * nb) = q;
   for (int r = 0; r < nc; ++r) {
@@ -331,7 +476,31 @@ bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd
   }
   // A model of user equations only has no mechanical unknowns: nothing to factor.
   Eigen::VectorXd sol(0);
-  if (kkt.rows() > 0) {
+  bool solved = rhs.size() == 0;
+  if (!solved && usesSparseAlgebra(system, method)) {
+    // One solver per thread: its symbolic analysis serves every output step of a run (the
+    // pattern of [M C^T; C 0] depends on the model only).
+    thread_local SaddlePointSolver saddle;
+    Eigen::VectorXd accelerations, multipliers;
+    solved = saddle.factor(sparseMassMatrix(system),
+                           sparseConstraintJacobian(system, y.data(), rows)) &&
+             saddle.solve(q, rhs.tail(nc), accelerations, multipliers);
+    if (solved) {
+      sol.resize(6 * nb + nc);
+      sol << accelerations, multipliers;
+    } else if (6 * nb + nc > kDenseRetryLimit) {
+      return false;
+    }
+  }
+  if (!solved) {
+    // Dense: full-pivot LU, whose rank test is the verdict on a singular matrix.
+    const Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
+    Eigen::MatrixXd mm;
+    system.massMatrix(mm);
+    Eigen::MatrixXd kkt = Eigen::MatrixXd::Zero(6 * nb + nc, 6 * nb + nc);
+    kkt.topLeftCorner(6 * nb, 6 * nb) = mm;
+    kkt.topRightCorner(6 * nb, nc) = c.transpose();
+    kkt.bottomLeftCorner(nc, 6 * nb) = c;
     Eigen::FullPivLU<Eigen::MatrixXd> lu(kkt);
     if (!lu.isInvertible()) return false;
     sol = lu.solve(rhs);

@@ -13,6 +13,19 @@
 
 namespace openmss::mechanics {
 
+// The linear algebra of the set-up solves below (docs/theory.md §7). Dense: the original
+// O(bodies^3) factorisations (QR, complete orthogonal decomposition, full-pivot LU). Sparse:
+// the sparse constraint Jacobian, a sparse rank-revealing QR for the redundant equations and
+// sparse LU factorisations of saddle-point systems (mechanics/saddle_point_solver.hpp), O(N)-ish
+// for chains and trees. Automatic: dense below kSparseFromBodies moving bodies, sparse from
+// there on. Measured on spatial revolute chains (docs/theory.md §7): the sparse acceleration
+// solve is already 5x faster at 8 bodies and 60x at 32; below 8 the two cost about the same
+// (< 0.3 ms), and the dense path keeps its full-pivot rank verdicts for the small models.
+// Both give the same results to round-off (tests/mechanics/sparse_setup_test.cpp).
+enum class LinearAlgebra { Automatic, Dense, Sparse };
+inline constexpr int kSparseFromBodies = 8;
+bool usesSparseAlgebra(const MultibodySystem& system, LinearAlgebra method);
+
 struct RedundancyReport {
   int rank = 0;
   std::vector<int> removed;  // equation indices found redundant (now inactive)
@@ -20,7 +33,11 @@ struct RedundancyReport {
 
 // Deactivates every equation whose row of C is a linear combination of earlier rows (earlier
 // statements keep their equations, as ADAMS keeps the first of two coaxial hinges).
-RedundancyReport removeRedundantConstraints(MultibodySystem& system, const Eigen::VectorXd& y);
+// A row counts as a combination when its part orthogonal to the earlier kept rows is at most
+// kRedundancyTolerance times its norm.
+inline constexpr double kRedundancyTolerance = 1e-9;
+RedundancyReport removeRedundantConstraints(MultibodySystem& system, const Eigen::VectorXd& y,
+                                            LinearAlgebra method = LinearAlgebra::Automatic);
 
 struct AssemblyResult {
   bool converged = false;
@@ -52,6 +69,7 @@ struct AssemblyOptions {
   // Hold the joints' initial displacements (JOINT IC=, ICTRAN=, ICROT=) as extra equations of
   // this solve only (ConstraintSet::jointInitialConditions; they are not part of the DAE).
   bool holdJointInitialConditions = false;
+  LinearAlgebra linearAlgebra = LinearAlgebra::Automatic;
 };
 
 // Positions: Gauss-Newton with minimum-norm corrections of body positions and orientations.
@@ -71,12 +89,15 @@ void applyBodyCorrection(const StateLayout& layout, const Eigen::VectorXd& delta
 // With holdJointInitialConditions, the joints' initial velocities (second values of IC=,
 // ICTRAN=, ICROT=) are held as extra equations of this solve.
 void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y,
-                     bool holdJointInitialConditions = false);
+                     bool holdJointInitialConditions = false,
+                     LinearAlgebra method = LinearAlgebra::Automatic);
 
 // Accelerations and multipliers from [M C^T; C 0][u'; lambda] = [Q; gamma]. Fills y' for the
 // integrator (r' = v, e' from w, v', w') and the multipliers in y. Returns false if singular.
+// The sparse path keeps its symbolic analysis per thread and reuses it while the KKT
+// pattern is the same (every output step of a run).
 bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd& y,
-                        Eigen::VectorXd& yp);
+                        Eigen::VectorXd& yp, LinearAlgebra method = LinearAlgebra::Automatic);
 
 // C over the active equations (rows) and moving bodies (6 columns each).
 Eigen::MatrixXd activeConstraintJacobian(const MultibodySystem& system, const double* y,

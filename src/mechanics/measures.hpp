@@ -6,6 +6,7 @@
 
 #include "common/rotation.hpp"
 #include "mechanics/pose.hpp"
+#include "mechanics/analysis_status_measures.hpp"
 #include "mechanics/user_measures.hpp"
 #include "model/measure.hpp"
 
@@ -27,6 +28,7 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
                       const T* y, T* out) {
   using K = model::MeasureKind;
   if (userMeasure(m, l, ms, y, out)) return true;  // VARVAL, DIF, ARYVAL, ... read the state
+  if (analysisStatusMeasure(m, ms, out)) return true;  // MODE, HSIZE, ORDER, NJAC, NRHS
   const MarkerState<T> i = markerOrGround(m, l, ms.i, y);
   const MarkerState<T> j = markerOrGround(m, l, ms.j, y);
   const M3<T> k = ms.k >= 0 ? markerState(m, l, ms.k, y).a

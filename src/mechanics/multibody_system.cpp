@@ -1,5 +1,6 @@
 #include "mechanics/multibody_system.hpp"
 
+#include <algorithm>
 #include <limits>
 #include <numbers>
 
@@ -68,6 +69,93 @@ void MultibodySystem::newtonMatrix(double t, const Eigen::VectorXd& y, const Eig
   }
 }
 
+namespace {
+
+// Seeds the dual state: values of y and y', zero derivatives.
+void seedValues(const Eigen::VectorXd& y, const Eigen::VectorXd& yp, SparseJacobianWork& w) {
+  const auto n = static_cast<size_t>(y.size());
+  w.y.resize(n);
+  w.yp.resize(n);
+  w.g.resize(n);
+  for (size_t i = 0; i < n; ++i) {
+    w.y[i] = Dual<double>(y(static_cast<Eigen::Index>(i)), 0.0);
+    w.yp[i] = Dual<double>(yp(static_cast<Eigen::Index>(i)), 0.0);
+  }
+}
+
+}  // namespace
+
+void MultibodySystem::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
+                                         const Eigen::VectorXd& yp, double cj,
+                                         const JacobianPattern& pattern,
+                                         Eigen::SparseMatrix<double>& jac,
+                                         SparseJacobianWork& work) const {
+  using D = Dual<double>;
+  const int n = layout_.size();
+  seedValues(y, yp, work);
+  double* values = jac.valuePtr();
+  for (int colour = 0; colour < pattern.colours(); ++colour) {
+    const int first = pattern.colourStart[colour], last = pattern.colourStart[colour + 1];
+    // Direction: the sum of e_c over the colour's columns (and cj e_c in y'). No row reads two
+    // of them, so row r's derivative is the entry of the one column of the colour it reads.
+    for (int k = first; k < last; ++k) {
+      const int c = pattern.colourColumns[k];
+      work.y[c].d = 1.0;
+      work.yp[c].d = layout_.differential(c) ? cj : 0.0;
+    }
+    for (int i = 0; i < n; ++i) work.g[i] = D(0.0, 0.0);
+    residual(t, work.y.data(), work.yp.data(), work.g.data());
+    for (int k = first; k < last; ++k) {
+      const int c = pattern.colourColumns[k];
+      for (int e = pattern.columnStart[c]; e < pattern.columnStart[c + 1]; ++e)
+        values[e] = work.g[pattern.rowIndex[e]].d;
+      work.y[c].d = 0.0;
+      work.yp[c].d = 0.0;
+    }
+  }
+}
+
+std::vector<int> MultibodySystem::rowsOutsidePattern(double t, const Eigen::VectorXd& y,
+                                                     const Eigen::VectorXd& yp, double cj,
+                                                     const Eigen::SparseMatrix<double>& jac,
+                                                     SparseJacobianWork& work) const {
+  using D = Dual<double>;
+  const int n = layout_.size();
+  seedValues(y, yp, work);
+  work.direction.resize(n);
+  work.product.assign(n, 0.0);
+  // A fixed direction with entries of both signs in [0.5, 1.5] (a linear congruential sequence:
+  // deterministic, and no entry zero, so no column escapes the check).
+  unsigned state = 12345u;
+  for (int c = 0; c < n; ++c) {
+    state = state * 1664525u + 1013904223u;
+    const double u = static_cast<double>(state >> 8) / static_cast<double>(1u << 24);
+    work.direction[c] = (u < 0.5 ? -1.0 : 1.0) * (0.5 + 2.0 * std::abs(u - 0.5));
+    work.y[c].d = work.direction[c];
+    work.yp[c].d = layout_.differential(c) ? cj * work.direction[c] : 0.0;
+  }
+  for (int i = 0; i < n; ++i) work.g[i] = D(0.0, 0.0);
+  residual(t, work.y.data(), work.yp.data(), work.g.data());
+  // |J| |v| per row: the scale of round-off in both products.
+  std::vector<double>& sparseProduct = work.product;
+  std::vector<double>& magnitude = work.magnitude;
+  magnitude.assign(n, 0.0);
+  for (int c = 0; c < n; ++c)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(jac, c); it; ++it) {
+      sparseProduct[it.row()] += it.value() * work.direction[c];
+      magnitude[it.row()] += std::abs(it.value() * work.direction[c]);
+    }
+  std::vector<int> rows;
+  for (int r = 0; r < n; ++r) {
+    const double exact = work.g[r].d;
+    // A state where the residual is not finite says nothing about the pattern.
+    if (!std::isfinite(exact) || !std::isfinite(sparseProduct[r])) continue;
+    if (!(std::abs(exact - sparseProduct[r]) <= 1e-8 * (magnitude[r] + std::abs(exact))))
+      rows.push_back(r);
+  }
+  return rows;
+}
+
 expr::TimeJet MultibodySystem::motionJet(int k, double t) const {
   const ConstraintEquation& eq = constraints_.equations()[k];
   auto& cached = motionCache_[eq.motion];
@@ -101,14 +189,50 @@ double MultibodySystem::geometryValue(const ConstraintEquation& eq, const double
 
 void MultibodySystem::constraintRow(const ConstraintEquation& eq, const double* y,
                                     double* row) const {
-  const int nb = layout_.bodies;
-  std::vector<double> g(layout_.size(), 0.0);
-  addConstraintForce(eq, y, 1.0, g.data());
-  for (int b = 0; b < nb; ++b) {
-    for (int c = 0; c < 3; ++c) {
-      row[6 * b + c] = g[layout_.body(b) + StateLayout::kV + c];
-      row[6 * b + 3 + c] = g[layout_.body(b) + StateLayout::kW + c];
+  // The dense row is the scattered sparse one (one code path for the numbers).
+  std::vector<int> cols;
+  std::vector<double> vals;
+  constraintRowEntries(eq, y, cols, vals);
+  std::fill(row, row + 6 * layout_.bodies, 0.0);
+  for (size_t i = 0; i < cols.size(); ++i) row[cols[i]] = vals[i];
+}
+
+void MultibodySystem::constraintRowEntries(int k, const double* y, std::vector<int>& cols,
+                                           std::vector<double>& vals) const {
+  constraintRowEntries(constraints_.equations()[k], y, cols, vals);
+}
+
+void MultibodySystem::constraintRowEntries(const ConstraintEquation& eq, const double* y,
+                                           std::vector<int>& cols,
+                                           std::vector<double>& vals) const {
+  cols.clear();
+  vals.clear();
+  Frame<double> frames[ConstraintEquation::kMaxMarkers];
+  equationFrames(eq, y, frames);
+  // The bodies in increasing order, each once (two markers of one equation may share a body:
+  // their derivatives add, in marker order, as addConstraintForce adds them).
+  int bodies[ConstraintEquation::kMaxMarkers];
+  int count = 0;
+  for (int side = 0; side < eq.markerCount(); ++side) {
+    const int body = model_->parts[model_->markers[eq.marker(side)].part].body;
+    if (body >= 0 && std::find(bodies, bodies + count, body) == bodies + count)
+      bodies[count++] = body;
+  }
+  // Insertion sort of at most kMaxMarkers entries (std::sort trips GCC 12's -Warray-bounds).
+  for (int i = 1; i < count; ++i)
+    for (int j = i; j > 0 && bodies[j - 1] > bodies[j]; --j) std::swap(bodies[j - 1], bodies[j]);
+  for (int i = 0; i < count; ++i)
+    for (int dir = 0; dir < 6; ++dir) {
+      cols.push_back(6 * bodies[i] + dir);
+      vals.push_back(0.0);
     }
+  for (int side = 0; side < eq.markerCount(); ++side) {
+    const int body = model_->parts[model_->markers[eq.marker(side)].part].body;
+    if (body < 0) continue;
+    const int slot = 6 * static_cast<int>(std::find(bodies, bodies + count, body) - bodies);
+    const BodyPose<double> pose = bodyPose(layout_, body, y);
+    for (int dir = 0; dir < 6; ++dir)
+      vals[slot + dir] = vals[slot + dir] + virtualDerivative(eq, frames, side, dir, pose.r, pose.a);
   }
 }
 
@@ -236,6 +360,8 @@ std::pair<int, int> MultibodySystem::elementMarkers(ConstraintElement kind, int 
       const model::Joint& j = model_->joints[model_->gears[element].joints[0]];
       return {j.iMarker, j.jMarker};
     }
+    case ConstraintElement::Gcon:
+      return {model_->gcons[element].iMarker, -1};
   }
   return {-1, -1};
 }
@@ -251,6 +377,7 @@ void MultibodySystem::elementReaction(ConstraintElement kind, int element, int m
           case ConstraintElement::JPrim: return eq.jprim == element;
           case ConstraintElement::Coupler: return eq.coupler == element;
           case ConstraintElement::Gear: return eq.gear == element;
+          case ConstraintElement::Gcon: return eq.gcon == element;
         }
         return false;
       },

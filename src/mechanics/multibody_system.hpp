@@ -14,6 +14,7 @@
 #include "mechanics/bound_function.hpp"
 #include "mechanics/constraint_set.hpp"
 #include "mechanics/force_elements.hpp"
+#include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/measures.hpp"
 #include "mechanics/state_layout.hpp"
 #include "mechanics/user_equations.hpp"
@@ -40,6 +41,18 @@ class MultibodySystem {
   // Newton matrix dG/dy + cj dG/dy', exact (forward-mode AD, one column per pass).
   void newtonMatrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
                     Eigen::MatrixXd& jac) const;
+  // The same matrix on the fixed structural pattern (jacobian_pattern.hpp) by compressed
+  // forward AD, one residual pass per colour: overwrites the values of jac, which must have
+  // been made by pattern.matrix() (no allocation once `work` has been sized).
+  void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                          double cj, const JacobianPattern& pattern,
+                          Eigen::SparseMatrix<double>& jac, SparseJacobianWork& work) const;
+  // The rows where jac (on its pattern) times a fixed pseudo-random direction v differs from
+  // the exact directional derivative (dG/dy + cj dG/dy') v by more than round-off: entries the
+  // pattern misses. Costs one residual pass.
+  std::vector<int> rowsOutsidePattern(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                      double cj, const Eigen::SparseMatrix<double>& jac,
+                                      SparseJacobianWork& work) const;
 
   // Constraint k's value Phi_k(q, t) (motions wrapped to +-pi for rotations).
   double constraintValue(int k, double t, const double* y) const;
@@ -48,6 +61,13 @@ class MultibodySystem {
   // The same for an equation outside the DAE (a joint initial condition), and its geometry.
   void constraintRow(const ConstraintEquation& eq, const double* y, double* row) const;
   double geometryValue(const ConstraintEquation& eq, const double* y) const;
+  // The nonzeros of the same row (identical numbers): columns 6 b + dir of the moving bodies
+  // the equation's markers sit on, increasing, at most 6 * markerCount() of them. Costs
+  // O(markers), not O(bodies): the sparse set-up solves (docs/theory.md §7) build C from these.
+  void constraintRowEntries(int k, const double* y, std::vector<int>& cols,
+                            std::vector<double>& vals) const;
+  void constraintRowEntries(const ConstraintEquation& eq, const double* y,
+                            std::vector<int>& cols, std::vector<double>& vals) const;
   // dPhi_k/dt at velocity u (= C u) and second derivative along u with zero acceleration.
   void constraintRates(int k, const double* y, double* first, double* second) const;
   // Motion function value and time derivatives (equation k must be a motion equation).
@@ -57,6 +77,9 @@ class MultibodySystem {
   // including gravity and the gyroscopic term -w x Jw, and the mass matrix diagonal blocks.
   void appliedForces(double t, const double* y, Eigen::VectorXd& q) const;
   void massMatrix(Eigen::MatrixXd& m) const;
+  // Its diagonal blocks of body b (the sparse set-up solves assemble M from these).
+  double bodyMass(int b) const { return mass_[b]; }
+  const Eigen::Matrix3d& bodyInertia(int b) const { return inertia_[b]; }
 
   // Force on the part of `marker` and torque about the marker's origin, both in ground,
   // exerted by the equations of element (joint or motion), from the multipliers in y.
@@ -67,7 +90,9 @@ class MultibodySystem {
   }
   // Coupler and Gear: their one equation's reaction on the part of any marker it reads (ADAMS
   // has no function for them; JOINT(...) and FORCE requests of the coupled joints leave it out).
-  enum class ConstraintElement { Joint, Motion, JPrim, Coupler, Gear };
+  // Gcon: the reaction of a GCON's equation on the part of its I marker (zero when the FUNCTION
+  // does not read I, as ADAMS documents).
+  enum class ConstraintElement { Joint, Motion, JPrim, Coupler, Gear, Gcon };
   void elementReaction(ConstraintElement kind, int element, int marker, const double* y,
                        Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
   // The I and J markers of a constraint element.

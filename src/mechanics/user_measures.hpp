@@ -70,6 +70,9 @@ bool userMeasure(const model::Model& m, const StateLayout& l, const model::Measu
     case K::PouVal:
       *out = variableValue(l, m.poutputs[ms.element].variables[ms.component - 1], y);
       return true;
+    case K::SenVal:  // a constant between sensor events: no derivative
+      *out = T(m.sensors[ms.element].evaluatedValue);
+      return true;
     default:
       return false;
   }

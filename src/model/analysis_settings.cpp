@@ -39,6 +39,19 @@ class ArgumentReader {
     }
     out.evaluate = flags;
   }
+  // A number in [low, high]; `what` says the range in words for the message.
+  void within(const language::Argument& a, double low, double high, const std::string& what,
+              double& out) {
+    if (a.values.empty() || a.values[0].kind != language::Value::Kind::Number ||
+        !(a.values[0].number >= low && a.values[0].number <= high)) {
+      fail(a, a.name + " must be " + what, "Write " + a.name + "=<value " + what + ">.");
+      return;
+    }
+    out = a.values[0].number;
+  }
+  void error(const language::Argument& a, const std::string& message, const std::string& hint) {
+    fail(a, message, hint);
+  }
   void unsupported(const language::Argument& a, const std::string& hint) {
     fail(a, a.name + " is not supported yet", hint);
   }
@@ -112,6 +125,118 @@ bool applyInitialConditionArguments(const language::Statement& s,
       r.positive(a, settings.velocityError);
     else
       r.unsupported(a, "Remove " + a.name + ".");
+  }
+  return r.ok();
+}
+
+const char* integratorTypeName(IntegratorType type) {
+  switch (type) {
+    case IntegratorType::Gstiff: return "GSTIFF";
+    case IntegratorType::Wstiff: return "WSTIFF";
+    case IntegratorType::Dstiff: return "DSTIFF";
+    case IntegratorType::Hht: return "HHT";
+    case IntegratorType::Newmark: return "NEWMARK";
+    case IntegratorType::Abam: return "ABAM";
+    case IntegratorType::ConstantBdf: return "CONSTANT_BDF";
+    case IntegratorType::Hastiff: return "HASTIFF";
+    case IntegratorType::Cpbdf: return "CPBDF";
+  }
+  return "?";
+}
+
+const char* formulationName(IntegratorFormulation f) {
+  switch (f) {
+    case IntegratorFormulation::I3: return "I3";
+    case IntegratorFormulation::Si2: return "SI2";
+    case IntegratorFormulation::Si1: return "SI1";
+  }
+  return "?";
+}
+
+bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& settings,
+                              Diagnostics& diags, const char* method) {
+  ArgumentReader r(s, diags);
+  if (s.has("DEFAULT")) settings = {};
+  using T = IntegratorType;
+  using F = IntegratorFormulation;
+  static const std::pair<const char*, T> kTypes[] = {
+      {"GSTIFF", T::Gstiff}, {"WSTIFF", T::Wstiff},   {"DSTIFF", T::Dstiff},
+      {"HHT", T::Hht},       {"NEWMARK", T::Newmark}, {"ABAM", T::Abam},
+      {"CONSTANT_BDF", T::ConstantBdf}, {"HASTIFF", T::Hastiff}, {"CPBDF", T::Cpbdf}};
+  if (method)
+    for (const auto& [name, type] : kTypes)
+      if (std::string(method) == name) settings.type = type;
+  for (const language::Argument& a : s.args) {
+    bool isType = false;
+    for (const auto& [name, type] : kTypes)
+      if (a.name == name) {
+        settings.type = type;
+        isType = true;
+      }
+    if (a.name == "CONSTANT_BDF" || a.name == "HASTIFF" || a.name == "CPBDF")
+      r.unsupported(a, "Use GSTIFF or WSTIFF (BDF), DSTIFF (IDA), HHT or NEWMARK; "
+                       "docs/integrators.md compares them.");
+    if (isType || a.name == "DEFAULT" || a.name == "LIST") continue;
+    if (a.name == "SI2_GSTIFF") {
+      settings.type = T::Gstiff;
+      settings.formulation = F::Si2;
+    } else if (a.name == "I3") {
+      settings.formulation = F::I3;
+    } else if (a.name == "SI2") {
+      settings.formulation = F::Si2;
+    } else if (a.name == "SI1") {
+      r.unsupported(a, "SI1 is a FORTRAN-solver formulation without a published definition; "
+                       "use I3 or SI2.");
+    } else if (a.name == "ERROR") {
+      r.positive(a, settings.error.emplace());
+    } else if (a.name == "HINIT") {
+      r.positive(a, settings.hinit.emplace());
+    } else if (a.name == "HMAX") {
+      r.positive(a, settings.hmax.emplace());
+    } else if (a.name == "HMIN") {
+      r.positive(a, settings.hmin.emplace());
+    } else if (a.name == "KMAX") {
+      double k = 6;
+      r.within(a, 1, 12, "a whole number from 1 to 12 (6 for the BDF integrators)", k);
+      settings.kmax = static_cast<int>(k);
+    } else if (a.name == "MAXIT") {
+      r.count(a, settings.maxit);
+    } else if (a.name == "PATTERN") {
+      r.pattern(a, settings.pattern.emplace());
+    } else if (a.name == "INTERPOLATE") {
+      settings.interpolate = !a.values.empty() && a.values[0].text == "ON";
+    } else if (a.name == "ALPHA") {
+      r.within(a, -1.0 / 3.0, 0.0, "between -1/3 and 0", settings.alpha);
+    } else if (a.name == "BETA") {
+      r.positive(a, settings.beta.emplace());
+    } else if (a.name == "GAMMA") {
+      r.positive(a, settings.gamma.emplace());
+    } else if (a.name == "CORRECTOR") {
+      if (a.values.empty() || a.values[0].text != "ORIGINAL")
+        r.unsupported(a, "Every integrator here iterates its corrector until all solution "
+                         "variables converge (CORRECTOR=ORIGINAL); remove CORRECTOR or write "
+                         "CORRECTOR=ORIGINAL.");
+    } else {
+      r.unsupported(a, "docs/integrators.md lists the INTEGRATOR arguments implemented; "
+                       "remove " + a.name + ".");
+    }
+  }
+  // Combinations: SI2 belongs to the BDF family; NEWMARK must be unconditionally stable.
+  if (settings.formulation == F::Si2 && settings.type != T::Gstiff &&
+      settings.type != T::Wstiff && !s.args.empty()) {
+    const language::Argument* a = s.find("SI2") ? s.find("SI2") : &s.args.front();
+    r.error(*a, std::string("the SI2 formulation applies to GSTIFF and WSTIFF, not to ") +
+                    integratorTypeName(settings.type),
+            "Write I3, or choose GSTIFF or WSTIFF.");
+  }
+  if (settings.type == T::Newmark && (settings.beta || settings.gamma)) {
+    const double beta = settings.beta.value_or(0.36), gamma = settings.gamma.value_or(0.7);
+    if (!(gamma >= 0.5 && 2.0 * beta >= gamma)) {
+      const language::Argument* a = s.find("BETA") ? s.find("BETA") : s.find("GAMMA");
+      r.error(*a, "NEWMARK with BETA=" + std::to_string(beta) + " and GAMMA=" +
+                      std::to_string(gamma) + " is not unconditionally stable",
+              "Choose GAMMA >= 0.5 and BETA >= GAMMA/2, e.g. BETA=(GAMMA+0.5)^2/4.");
+    }
   }
   return r.ok();
 }

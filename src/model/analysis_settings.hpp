@@ -5,6 +5,7 @@
 
 #include <array>
 #include <numbers>
+#include <optional>
 
 #include "common/diagnostics.hpp"
 #include "language/dataset.hpp"
@@ -39,6 +40,31 @@ struct InitialConditionSettings {
   double translationLimit = 1e10;                       // TLIMIT
   double velocityError = 1e-4;                          // VERROR
 };
+
+// INTEGRATOR statement and command (digest §7.1; seed Tables 4 and 5). Unset optionals take
+// the chosen integrator's ADAMS default when the run starts (analysis/integrator_factory.cpp,
+// docs/integrators.md): several depend on the output step.
+enum class IntegratorType { Gstiff, Wstiff, Dstiff, Hht, Newmark, Abam, ConstantBdf, Hastiff, Cpbdf };
+enum class IntegratorFormulation { I3, Si2, Si1 };
+struct IntegratorSettings {
+  IntegratorType type = IntegratorType::Gstiff;
+  IntegratorFormulation formulation = IntegratorFormulation::I3;
+  std::optional<double> error, hinit, hmin, hmax;  // ERROR, HINIT, HMIN, HMAX
+  std::optional<int> kmax;                         // KMAX
+  int maxit = 10;                                  // MAXIT
+  std::optional<JacobianPattern> pattern;          // PATTERN (unset: adaptive re-evaluation)
+  std::optional<bool> interpolate;                 // INTERPOLATE=ON/OFF
+  double alpha = -0.3;                             // ALPHA (HHT)
+  std::optional<double> beta, gamma;               // BETA, GAMMA (NEWMARK; HHT derives them)
+};
+const char* integratorTypeName(IntegratorType type);  // "GSTIFF", "HHT", ...
+const char* formulationName(IntegratorFormulation f);  // "I3", "SI2", "SI1"
+
+// Apply the arguments of an INTEGRATOR statement/command (or of the FORTRAN-era GSTIFF,
+// WSTIFF, DSTIFF commands: `method` then names the integrator they select). DEFAULT resets
+// everything first. Out-of-range values and arguments without an implementation are errors.
+bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& settings,
+                              Diagnostics& diags, const char* method = nullptr);
 
 // Apply the arguments of an EQUILIBRIUM or IC statement/command. Unsupported arguments
 // (the FORTRAN dynamic-relaxation options of EQUILIBRIUM) and out-of-range values are errors.

@@ -31,6 +31,12 @@ enum class MeasureKind {
   // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
   // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
   VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
+  // SENVAL(id): the value SENSOR `element` (index into Model::sensors) stored at its last
+  // event; constant between events (analysis/sensor_monitor.hpp).
+  SenVal,
+  // Analysis variables (model/analysis_status.hpp): MODE, HSIZE, ORDER, NJAC, NRHS. Constants
+  // of the state, so their derivatives are zero.
+  AnalysisMode, StepSize, IntegratorOrder, JacobianCount, ResidualCount,
 };
 
 struct Measure {

@@ -17,6 +17,7 @@
 #include "common/spline.hpp"
 #include "expr/expression.hpp"
 #include "model/analysis_settings.hpp"
+#include "model/analysis_status.hpp"
 #include "model/measure.hpp"
 
 namespace openmss::model {
@@ -134,6 +135,20 @@ struct BoundExpression {
   std::vector<Measure> measures;  // measures[k] is the value of expression.hostCalls()[k]
 };
 
+// GCON/id [, I=id], FUNCTION=e: the expression is held at zero (docs/theory.md §5c). Only
+// position measures of fixed markers may appear (holonomic, scleronomic); I names the marker
+// whose part's reaction is reported (-1: none, ADAMS's default of ground).
+struct GeneralConstraint {
+  // The most markers one GCON may read and the most distinct measures in its FUNCTION; they
+  // bound the fixed work arrays of the constraint evaluation.
+  static constexpr int kMaxMarkers = 6;
+  static constexpr int kMaxMeasures = 16;
+  long id = 0;
+  int iMarker = -1;
+  BoundExpression function;
+  SourceLocation where;
+};
+
 struct SForce {
   long id = 0;
   int iMarker = -1;
@@ -244,6 +259,31 @@ struct PlantVariables {
   SourceLocation where;
 };
 
+// ---- SENSOR (model/sensor_builder.cpp; analysis/sensor_monitor.hpp; docs/theory.md,
+// "Sensors") ----
+// An event on FUNCTION compared with VALUE: EQ holds while |f - VALUE| <= ERROR, GE while
+// f >= VALUE, LE while f <= VALUE. The sensor acts when its test starts to hold.
+struct Sensor {
+  enum class Test { Eq, Ge, Le };
+  long id = 0;
+  BoundExpression function;
+  double value = 0.0;
+  Test test = Test::Eq;
+  double error = 1e-3;     // ERROR: absolute tolerance on the function (ADAMS default 0.001)
+  bool bisection = false;  // BISECTION: locate the event by bisection (else Illinois secant)
+  bool halt = false;       // HALT: the run ends at the event
+  bool print = false;      // PRINT: an output step at the event
+  bool restart = false;    // RESTART: the integrator restarts at the event (order 1)
+  bool returnToCommands = false;           // RETURN: the SIMULATE command ends at the event
+  std::optional<double> outputInterval;    // DT: the output interval from the event on
+  std::optional<double> stepSize;          // STEPSIZE: the first step after the event
+  std::optional<BoundExpression> evaluate;  // EVALUATE: stored at the event, read by SENVAL
+  // SENVAL(id): the EVALUATE value of the last event (0 before any). A run-time value written
+  // only by analysis/sensor_monitor.cpp at events, hence mutable in the otherwise fixed model.
+  mutable double evaluatedValue = 0.0;
+  SourceLocation where;
+};
+
 struct Request {
   enum class Kind { Displacement, Velocity, Acceleration, Force, Expressions };
   long id = 0;
@@ -304,6 +344,7 @@ struct Model {
   std::vector<JPrim> jprims;
   std::vector<Coupler> couplers;  // COUPLER
   std::vector<Gear> gears;        // GEAR
+  std::vector<GeneralConstraint> gcons;  // GCON
   std::vector<SForce> sforces;
   std::vector<SpringDamper> springDampers;
   std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM
@@ -315,6 +356,7 @@ struct Model {
   std::vector<LinearStateElement> linearStates;
   std::vector<PlantVariables> pinputs, poutputs;
   std::vector<Request> requests;
+  std::vector<Sensor> sensors;  // SENVAL(id) measures index this list
   // Data elements (data_element_builder.cpp); the maps give the index of each id.
   std::vector<SplineData> splines;
   std::vector<CurveData> curves;
@@ -325,11 +367,17 @@ struct Model {
   DebugSettings debug;  // DEBUG statement (EPRINT)
   EquilibriumSettings equilibrium;            // EQUILIBRIUM statement (and command)
   InitialConditionSettings initialConditions;  // IC statement (and command)
+  IntegratorSettings integrator;               // INTEGRATOR statement (and command)
   std::vector<int> movingParts;  // part index of each moving body, in state order
   int groundPart = -1;
 
   std::map<long, int> partIndex, markerIndex, jointIndex;
   std::map<long, int> jprimIndex;
+
+  // MODE, HSIZE, ORDER, NJAC, NRHS: a run-time value written only by the analysis session
+  // before it evaluates expressions (as Sensor::evaluatedValue), hence mutable in the otherwise
+  // fixed model.
+  mutable AnalysisStatus analysisStatus;
 
   int bodyCount() const { return static_cast<int>(movingParts.size()); }
   // User states (mechanics/state_layout.hpp): differential ones are the DIFF states, then the

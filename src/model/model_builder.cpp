@@ -7,8 +7,10 @@
 #include "common/rotation.hpp"
 #include "language/schema.hpp"
 #include "model/coupling_builder.hpp"
+#include "model/general_constraint_builder.hpp"
 #include "model/data_element_builder.hpp"
 #include "model/force_element_builder.hpp"
+#include "model/sensor_builder.hpp"
 #include "model/units_table.hpp"
 #include "model/user_equation_builder.hpp"
 
@@ -155,19 +157,55 @@ const std::set<std::string>& supportedStatements() {
                                           "VFORCE", "VTORQUE", "GFORCE",
                                           // joint couplings (coupling_builder.cpp)
                                           "COUPLER", "GEAR",
+                                          // general constraints (general_constraint_builder)
+                                          "GCON",
                                           // user equations (user_equation_builder.cpp)
                                           "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO",
                                           "PINPUT", "POUTPUT",
                                           // integrator diagnostics (DEBUG/EPRINT)
-                                          "DEBUG"};
+                                          "DEBUG",
+                                          // events (sensor_builder.cpp)
+                                          "SENSOR",
+                                          // results-file request: warns (no .res writer yet)
+                                          "RESULTS",
+                                          // integrator choice (analysis_settings.cpp)
+                                          "INTEGRATOR"};
   return s;
 }
 
 }  // namespace
 
+// The analysis variables (docs/expressions.md, "Analysis variables"). Returns false when `name`
+// is not one. MODE is accepted everywhere: it is constant through an analysis. The integrator
+// statistics change inside a step, between the residual evaluations of one Newton matrix, so
+// they are read by REQUEST functions only (at output steps, where they equal the .msg's
+// numbers). CPU is refused: CPU time differs from run to run and would break reproducibility.
+template <class Fail>
+bool bindAnalysisVariable(const std::string& name, bool forRequest, Measure& m, Fail&& fail) {
+  static const std::map<std::string, MeasureKind> variables = {
+      {"MODE", MeasureKind::AnalysisMode},   {"HSIZE", MeasureKind::StepSize},
+      {"ORDER", MeasureKind::IntegratorOrder}, {"NJAC", MeasureKind::JacobianCount},
+      {"NRHS", MeasureKind::ResidualCount}};
+  if (name == "CPU") {
+    fail("CPU time is not available: it differs from run to run, and OpenMSS keeps its outputs "
+         "bit-identical across runs",
+         "Remove CPU; NRHS (residual evaluations) or NJAC measure the solver's effort "
+         "reproducibly.");
+    return true;
+  }
+  const auto it = variables.find(name);
+  if (it == variables.end()) return false;
+  m.kind = it->second;
+  if (!forRequest && m.kind != MeasureKind::AnalysisMode)
+    fail("the integrator statistics HSIZE, ORDER, NJAC and NRHS are supported in REQUEST "
+         "functions only so far (they change within an integrator step)",
+         "Read it in a REQUEST F1..F8 function; MODE may be used in any function but MOTION.");
+  return true;
+}
+
 bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
                     const std::string& subject, bool forForces, Diagnostics& diags,
-                    BoundExpression& out) {
+                    BoundExpression& out, bool forConstraint, bool forRequest) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
   if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
   bool ok = true;
@@ -209,6 +247,7 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
         {"ACCM", MeasureKind::ACCM},   {"WDTX", MeasureKind::WDTX},
         {"WDTY", MeasureKind::WDTY},   {"WDTZ", MeasureKind::WDTZ},
         {"WDTM", MeasureKind::WDTM},   {"PSI", MeasureKind::PSI},     {"THETA", MeasureKind::THETA},
+        {"AX", MeasureKind::AX},       {"AY", MeasureKind::AY},       {"AZ", MeasureKind::AZ},
         {"PHI", MeasureKind::PHI},     {"YAW", MeasureKind::YAW},
         {"PITCH", MeasureKind::PITCH}, {"ROLL", MeasureKind::ROLL}};
     if (auto it = kinematic.find(call.name); it != kinematic.end()) {
@@ -226,6 +265,11 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
         fail("time derivatives in a moving frame (the l argument) are not supported yet",
              "Omit the last argument or give 0 so derivatives are taken in ground.");
       if (m.i == -1) fail("the first marker is required", "Give the id of the measured marker.");
+      if (!forConstraint &&
+          (m.kind == MeasureKind::AX || m.kind == MeasureKind::AY || m.kind == MeasureKind::AZ))
+        fail("cumulative angles (with angle wrapping) are supported in GCON only so far",
+             "Use ATAN2 of marker axes products or ORIENT for a principal angle; see "
+             "docs/expressions.md.");
     } else if (call.name == "ORIENT") {
       m.kind = MeasureKind::Orient;
       m.code = call.args.size() > 0 ? static_cast<int>(call.args[0]) : 0;
@@ -287,6 +331,10 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
         fail("the component must be 1 to 8", "1 |F|, 2-4 Fx Fy Fz, 5 |T|, 6-8 Tx Ty Tz.");
     } else if (bindUserMeasure(model, call, m, fail)) {
       // VARVAL, DIF, DIF1, ARYVAL, PINVAL, POUVAL (user_equation_builder.cpp)
+    } else if (bindSensorMeasure(model, call, m, fail)) {
+      // SENVAL (sensor_builder.cpp)
+    } else if (bindAnalysisVariable(call.name, forRequest, m, fail)) {
+      // MODE, HSIZE, ORDER, NJAC, NRHS; CPU refused (model/analysis_status.hpp)
     } else {
       fail("this function is not supported yet by the solver",
            "Remove it or replace it by a supported function; see README.md for the list.");
@@ -307,6 +355,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   model.title = dataset.title;
   model.file = dataset.file;
   buildDataElements(dataset, model, diags);  // SPLINE, CURVE, MATRIX, STRING first
+  buildSensors(dataset, model, diags);       // before any expression: SENVAL(id) reads them
 
   std::vector<RawPart> rawParts;
   std::vector<RawMarker> rawMarkers;
@@ -315,10 +364,15 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   std::vector<const Statement*> forceElementStatements;  // SPRINGDAMPER ... GFORCE
   std::vector<const Statement*> userStatements;  // VARIABLE, DIFF, ARRAY, LSE, TFSISO, ...
   std::vector<const Statement*> couplingStatements;      // COUPLER, GEAR
+  std::vector<const Statement*> gconStatements;          // GCON
   long lastPartId = 0;
 
   for (const Statement& s : dataset.statements) {
     Args a(s, diags);
+    if (s.name == "GSE") {  // user subroutines only (sensor_builder.cpp)
+      rejectGeneralStateEquation(s, diags);
+      continue;
+    }
     if (!supportedStatements().count(s.name) && !isDataElementStatement(s.name)) {
       diags.error(s.where, s.subject(), s.name + " is not supported yet by the solver",
                   "Remove the statement, or run it with a tool that supports it; README.md "
@@ -390,12 +444,16 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
       userStatements.push_back(&s);
     } else if (isCouplingStatement(s.name)) {
       couplingStatements.push_back(&s);
+    } else if (s.name == "GCON") {
+      gconStatements.push_back(&s);
     } else if (s.name == "REQUEST") {
       requests.push_back(&s);
     } else if (s.name == "EQUILIBRIUM") {
       applyEquilibriumArguments(s, model.equilibrium, diags);
     } else if (s.name == "IC") {
       applyInitialConditionArguments(s, model.initialConditions, diags);
+    } else if (s.name == "INTEGRATOR") {
+      applyIntegratorArguments(s, model.integrator, diags);
     } else if (s.name == "ACCGRAV") {
       model.gravity = Eigen::Vector3d(a.real("IGRAV").value_or(0.0), a.real("JGRAV").value_or(0.0),
                                       a.real("KGRAV").value_or(0.0));
@@ -416,6 +474,11 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
                         "Remove it to silence this warning.");
       }
     }
+    if (s.name == "RESULTS")  // like OUTPUT/GRSAVE: a file request, not part of the model
+      diags.warning(s.where, s.subject(),
+                    "the results (.res) file is not written yet; the run goes on without it "
+                    "(the request file .req is written with OUTPUT/REQSAVE)",
+                    "Remove RESULTS to silence this warning.");
     // GRAPHICS: read and checked by the reader; the solver writes no graphics file yet.
   }
 
@@ -888,6 +951,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   }
   // COUPLER and GEAR (coupling_builder.cpp): after every joint and marker exists.
   buildCouplings(couplingStatements, model, diags);
+  // GCON (general_constraint_builder.cpp): after every marker exists.
+  buildGeneralConstraints(gconStatements, model, diags);
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(forceElementStatements, model, markerRef, diags);
   // Bind SFORCE functions after every SFORCE exists (a function may read another SFORCE).
@@ -909,6 +974,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
 
   bindForceElementFunctions(forceElementStatements, model, diags);
   bindUserEquationFunctions(userStatements, model, diags);
+  bindSensorFunctions(dataset, model, diags);
 
   // Requests.
   for (const Statement* s : requests) {
@@ -958,7 +1024,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
         const Argument* fa = s->find(("F" + std::to_string(c + 1)).c_str());
         if (!fa) continue;
         BoundExpression b;
-        if (bindExpression(model, fa->expression, fa->valueWhere, s->subject(), false, diags, b))
+        if (bindExpression(model, fa->expression, fa->valueWhere, s->subject(), false, diags, b,
+                           /*forConstraint=*/false, /*forRequest=*/true))
           r.columns[c] = std::move(b);
         else
           ok = false;

@@ -16,7 +16,10 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
 // accelerations or reaction forces (they are allowed in requests only).
 bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
                     const std::string& subject, bool forForces, Diagnostics& diags,
-                    BoundExpression& out);
+                    BoundExpression& out, bool forConstraint = false,
+                    bool forRequest = false);
+// forConstraint (GCON): AX, AY and AZ are accepted and read as principal angles in (-pi, pi];
+// elsewhere they are refused until their cumulative (unwrapped) form exists (docs/theory.md §5c).
 
 // DEBUG statement or command: EPRINT is supported; other dumps warn and have no effect.
 void applyDebugArguments(const language::Statement& s, DebugSettings& debug, Diagnostics& diags);

@@ -61,6 +61,14 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   for (auto* v : {&yNew_, &ypNew_, &yPred_, &base_, &g_, &dy_, &predictorDiff_}) v->resize(n);
   rowScale_ = Eigen::VectorXd::Ones(n);
   colScale_ = Eigen::VectorXd::Ones(n);
+  sparse_ = problem_.sparse() && n >= kSparseThreshold;
+  if (sparse_) {
+    sparseJac_ = *problem_.pattern();
+    klu_.analyze(sparseJac_);
+    solver_ = &klu_;
+  } else {
+    solver_ = &dense_;
+  }
   jacobianCurrent_ = false;
   haveJacobian_ = false;
 }
@@ -120,10 +128,34 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   // Corrector: BDF of order k through tNew and the last k solutions.
   nodes[0] = tNew;
   for (int j = 1; j <= k; ++j) nodes[j] = ts_[j - 1];
+  if (settings_.fixedCoefficients && nh >= 2) {
+    // GSTIFF: the past solutions re-sampled at t_n - (j-1) h on the polynomial through the
+    // last min(k+1, nh) solutions (the predictor's), so the corrector has constant-step
+    // coefficients whatever the step history.
+    const int npts = std::min(k + 1, nh);
+    double hist[8], wv[8], dwv[8];
+    for (int j = 0; j < npts; ++j) hist[j] = ts_[j];
+    equallySpaced_.resize(static_cast<size_t>(k));
+    for (int j = 1; j <= k; ++j) {
+      nodes[j] = t_ - (j - 1) * h;
+      Eigen::VectorXd& v = equallySpaced_[static_cast<size_t>(j - 1)];
+      const double* hit = std::find(hist, hist + npts, nodes[j]);
+      if (hit != hist + npts) {
+        v = ys_[static_cast<size_t>(hit - hist)];
+        continue;
+      }
+      lagrangeAt(hist, npts, nodes[j], wv, dwv);
+      v = wv[0] * ys_[0];
+      for (int m = 1; m < npts; ++m) v += wv[m] * ys_[static_cast<size_t>(m)];
+    }
+  }
   bdfWeights(nodes, k + 1, a);
   const double cj = a[0];
   base_.setZero();
-  for (int j = 1; j <= k; ++j) base_ += a[j] * ys_[j - 1];
+  if (settings_.fixedCoefficients && nh >= 2)
+    for (int j = 1; j <= k; ++j) base_ += a[j] * equallySpaced_[static_cast<size_t>(j - 1)];
+  else
+    for (int j = 1; j <= k; ++j) base_ += a[j] * ys_[j - 1];
   if (nh >= k + 1) {
     double num = 1.0, den = cj;
     for (int j = 1; j <= k; ++j) num *= tNew - nodes[j];
@@ -136,14 +168,23 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   // Modified Newton. A Jacobian is kept while cj stays within 20 % of the one it was formed
   // with and the iteration contracts well.
   auto refresh = [&]() {
-    problem_.newtonMatrix(tNew, yPred_, cj * yPred_ + base_, cj, jac_);
+    ypNew_ = cj * yPred_ + base_;  // (overwritten by the iteration before its next use)
     ++stats_.jacobianEvaluations;
-    for (int i = 0; i < jac_.rows(); ++i) {
+    for (int i = 0; i < rowScale_.size(); ++i) {
       rowScale_(i) = std::pow(cj, problem_.rowScaleExponent(i));
       colScale_(i) = std::pow(cj, problem_.unknownScaleExponent(i));
     }
-    jac_ = rowScale_.asDiagonal() * jac_ * colScale_.asDiagonal();
-    lu_.compute(jac_);
+    if (sparse_) {
+      problem_.newtonMatrixSparse(tNew, yPred_, ypNew_, cj, sparseJac_);
+      for (int c = 0; c < sparseJac_.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
+          e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
+      klu_.factor(sparseJac_);
+    } else {
+      problem_.newtonMatrix(tNew, yPred_, ypNew_, cj, jac_);
+      jac_ = rowScale_.asDiagonal() * jac_ * colScale_.asDiagonal();
+      dense_.factor(jac_);
+    }
     cjJacobian_ = cj;
     haveJacobian_ = true;
     jacobianCurrent_ = true;
@@ -155,10 +196,18 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     double previous = 0.0, rate = 0.0;
     bool converged = false;
     for (int it = 0; it < settings_.maxit; ++it) {
+      if (settings_.patternGiven && (it == 0 ? !jacobianCurrent_ : settings_.pattern[it % 10])) {
+        // PATTERN: re-form at this iterate (refresh() linearises at yPred_).
+        std::swap(yPred_, yNew_);
+        refresh();
+        std::swap(yPred_, yNew_);
+      }
       ypNew_ = cj * yNew_ + base_;
       problem_.residual(tNew, yNew_, ypNew_, g_);
       ++stats_.residualEvaluations;
-      dy_ = colScale_.cwiseProduct(lu_.solve(rowScale_.cwiseProduct(g_)));
+      dy_ = rowScale_.cwiseProduct(g_);
+      solver_->solve(dy_);
+      dy_.array() *= colScale_.array();
       // A Jacobian formed at another cj approximates cj dG/dy': rescale the step (DASSL).
       if (cjJacobian_ != cj) dy_ *= 2.0 / (1.0 + cj / cjJacobian_);
       yNew_ -= dy_;
@@ -206,7 +255,9 @@ double BdfIntegrator::orderErrorEstimate(int q, double h) const {
   // solutions: LTE ~ q! h^(q+1) |y[q+1 points...]|. Needs q+2 history points.
   const int need = q + 2;
   if (static_cast<int>(ts_.size()) < need) return -1.0;
-  std::vector<Eigen::VectorXd> dd(ys_.begin(), ys_.begin() + need);
+  std::vector<Eigen::VectorXd>& dd = divided_;  // reused: no allocation once sized
+  dd.resize(static_cast<size_t>(need));
+  for (int j = 0; j < need; ++j) dd[j] = ys_[j];
   for (int level = 1; level < need; ++level)
     for (int j = 0; j < need - level; ++j)
       dd[j] = (dd[j] - dd[j + 1]) / (ts_[j] - ts_[j + level]);
@@ -262,7 +313,15 @@ bool BdfIntegrator::step(double tout) {
     y_ = yNew_;
     yp_ = ypNew_;
     ts_.push_front(t_);
-    ys_.push_front(y_);
+    // The oldest solution's storage is reused for the newest once the history is full.
+    if (static_cast<int>(ys_.size()) >= settings_.kmax + 3) {
+      Eigen::VectorXd reused = std::move(ys_.back());
+      ys_.pop_back();
+      reused = y_;
+      ys_.push_front(std::move(reused));
+    } else {
+      ys_.push_front(y_);
+    }
     while (static_cast<int>(ts_.size()) > settings_.kmax + 3) {
       ts_.pop_back();
       ys_.pop_back();

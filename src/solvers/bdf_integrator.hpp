@@ -7,10 +7,13 @@
 #include <deque>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
 #include "solvers/dae_problem.hpp"
+#include "solvers/dense_linear_solver.hpp"
+#include "solvers/klu_linear_solver.hpp"
 #include "solvers/integrator.hpp"
 
 namespace openmss::solvers {
@@ -22,6 +25,16 @@ struct BdfSettings {
   double hmin = 0.0;    // HMIN: smallest step before the run fails
   int kmax = 6;         // KMAX: highest order
   int maxit = 10;       // MAXIT: corrector iterations per attempt
+  // Corrector coefficients (docs/integrators.md, "GSTIFF and WSTIFF"). Variable: the BDF
+  // through the actual past times (WSTIFF). Fixed: the constant-step BDF through the past
+  // solution interpolated to an equally spaced grid at the new step (GSTIFF's Nordsieck
+  // rescaling); a step change then costs an interpolation error.
+  bool fixedCoefficients = false;
+  // PATTERN: when set, the Jacobian is also re-formed at every corrector iteration j whose
+  // flag pattern[j % 10] is true, and always at the first (seed Table 4, note 5). Unset: it
+  // is re-formed only when cj has drifted or the corrector fails.
+  bool patternGiven = false;
+  bool pattern[10] = {true, false, false, false, true, false, false, false, true, false};
 };
 
 // The names the BDF family used before the common interface (solvers/integrator.hpp).
@@ -36,6 +49,10 @@ class BdfIntegrator final : public Integrator {
 
   void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
   bool step(double tout) override;
+  bool setNextStepSize(double h) override {  // SENSOR/STEPSIZE
+    h_ = h;
+    return true;
+  }
 
   double t() const override { return t_; }
   const Eigen::VectorXd& y() const override { return y_; }
@@ -45,6 +62,13 @@ class BdfIntegrator final : public Integrator {
   void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
   const IntegratorStatistics& statistics() const override { return stats_; }
   const IntegratorFailure& failure() const override { return failure_; }
+
+  // Problems with at least this many unknowns that offer a sparse Newton matrix are solved with
+  // it and KLU; smaller ones with a dense matrix and LU (measured in bench/jacobian_bench.cpp
+  // and docs/theory.md, "Sparse Newton matrix").
+  static constexpr int kSparseThreshold = 100;
+  // "KLU" or "dense LU": the linear solver of the current run.
+  const char* linearSolverName() const { return solver_->name(); }
 
  private:
   bool attemptStep(double h, int k, bool* newtonFailed, double* errorNorm);
@@ -66,9 +90,16 @@ class BdfIntegrator final : public Integrator {
   int stepsAtOrder_ = 0;
   int lastStepOrder_ = 1;  // order of the last accepted step (its interpolant)
 
-  // Newton matrix and its factorisation, kept while they serve.
+  // Newton matrix and its factorisation, kept while they serve: dense, or sparse on the
+  // problem's fixed pattern (sparse_), factorised by solver_.
+  bool sparse_ = false;
   Eigen::MatrixXd jac_;
-  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::SparseMatrix<double> sparseJac_;
+  DenseLinearSolver dense_;
+  KluLinearSolver klu_;
+  LinearSolver* solver_ = &dense_;
+  mutable std::vector<Eigen::VectorXd> divided_;  // orderErrorEstimate's work vectors
+  std::vector<Eigen::VectorXd> equallySpaced_;     // fixed-coefficient history (GSTIFF)
   Eigen::VectorXd rowScale_, colScale_;
   double cjJacobian_ = 0.0;
   bool jacobianCurrent_ = false;

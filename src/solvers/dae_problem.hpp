@@ -6,6 +6,7 @@
 #include <string>
 
 #include <Eigen/Dense>
+#include <Eigen/SparseCore>
 
 namespace openmss::solvers {
 
@@ -30,6 +31,30 @@ class DaeProblem {
   virtual int unknownScaleExponent(int i) const = 0;
   virtual std::string equationName(int row) const = 0;
   virtual std::string variableName(int i) const = 0;
+
+  // What unknown i (and equation row i, its partner) is in a second-order mechanical DAE, for
+  // the Newmark family (HHT, NEWMARK; solvers/hht_integrator.hpp): a Position obeys a
+  // kinematic row (r' = v, e' = E w / 2), a Velocity a force balance (M v' = forces, the row
+  // HHT evaluates partly at the previous step), an Algebraic unknown (multiplier) no
+  // derivative, a FirstOrder one a first-order state equation (DIFF, LSE). The default keeps
+  // every differential unknown first-order.
+  enum class Role { Algebraic, FirstOrder, Position, Velocity };
+  virtual Role role(int i) const { return differential(i) ? Role::FirstOrder : Role::Algebraic; }
+
+  // Optional sparse Newton matrix (docs/theory.md, "Sparse Newton matrix"). A problem that
+  // offers one returns true from sparse(), a matrix holding its fixed pattern from pattern()
+  // (values irrelevant), and fills the values of a matrix with that pattern in
+  // newtonMatrixSparse. It may widen the pattern when it finds an entry outside it (jac then
+  // has the new pattern, which pattern() returns from then on).
+  virtual bool sparse() const { return false; }
+  virtual const Eigen::SparseMatrix<double>* pattern() { return nullptr; }
+  virtual void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                  double cj, Eigen::SparseMatrix<double>& jac) {
+    // Only called when sparse() is true; the dense matrix serves as a fallback.
+    Eigen::MatrixXd dense;
+    newtonMatrix(t, y, yp, cj, dense);
+    jac = dense.sparseView();
+  }
 };
 
 }  // namespace openmss::solvers

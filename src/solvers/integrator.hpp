@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -61,6 +62,13 @@ class Integrator {
   // Consistent initial values (y0, y'0) at t0. Also used to restart after a discontinuity
   // (SENSOR/RESTART): the method forgets its history.
   virtual void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) = 0;
+  // The size of the next step attempt (SENSOR/STEPSIZE after a restart), still bounded by the
+  // method's HMAX. Returns false when the method cannot take a size from outside (the caller
+  // then says that STEPSIZE had no effect).
+  virtual bool setNextStepSize(double h) {
+    (void)h;
+    return false;
+  }
   // Takes one accepted step that does not pass tout (it lands on tout exactly when it gets
   // there). Returns false on failure (see failure()).
   virtual bool step(double tout) = 0;
@@ -82,6 +90,9 @@ class Integrator {
 
   virtual const IntegratorStatistics& statistics() const = 0;
   virtual const IntegratorFailure& failure() const = 0;
+  // Advice the method has for the user about this run, for the .msg (ABAM's stiffness
+  // warning); each line appears once and lines are only ever added.
+  virtual std::vector<std::string> warnings() const { return {}; }
 
   void setIterationObserver(void (*fn)(const IterationInfo&, void*), void* user) {
     iterationObserver_ = fn;

@@ -1,0 +1,166 @@
+// Scaling of the dynamics core on planar revolute pendulum chains of N links
+// (bench/model_generators.hpp): one residual, one sparse Newton matrix (structural pattern,
+// compressed forward AD, with its run-time pattern check), one KLU factorisation and solve, and
+// the BDF step loop; the dense matrix and LU beside them for small N, which is where the
+// integrator's sparse threshold (BdfIntegrator::kSparseThreshold) comes from. Figures only;
+// nothing is asserted. Run: build/bench/jacobian_bench (OPENMSS_BUILD_BENCH=ON).
+
+#include <benchmark/benchmark.h>
+
+#include <map>
+#include <memory>
+
+#include "analysis/multibody_dae.hpp"
+#include "language/reader.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "model/model_builder.hpp"
+#include "model_generators.hpp"
+#include "solvers/bdf_integrator.hpp"
+#include "solvers/dense_linear_solver.hpp"
+#include "solvers/klu_linear_solver.hpp"
+
+namespace {
+
+using namespace openmss;
+
+// One assembled chain per size, built once for all benchmarks (set-up is not timed).
+struct Chain {
+  model::Model model;
+  std::unique_ptr<mechanics::MultibodySystem> system;
+  std::unique_ptr<analysis::MultibodyDae> dae;
+  Eigen::VectorXd y, yp;
+  double cj = 1e3;
+};
+
+Chain& chain(int links) {
+  static std::map<int, std::unique_ptr<Chain>> chains;
+  auto& c = chains[links];
+  if (c) return *c;
+  c = std::make_unique<Chain>();
+  language::Dataset ds;
+  Diagnostics d;
+  language::readDatasetText(bench::planarPendulumChainAdm(links), "chain.adm", ds, d);
+  model::buildModel(ds, c->model, d);
+  c->system = std::make_unique<mechanics::MultibodySystem>(c->model);
+  c->y = c->system->initialState();
+  mechanics::removeRedundantConstraints(*c->system, c->y);
+  mechanics::assemblePositions(*c->system, 0.0, c->y, 1e-12, 25);
+  mechanics::solveVelocities(*c->system, 0.0, c->y);
+  mechanics::solveAccelerations(*c->system, 0.0, c->y, c->yp);
+  c->dae = std::make_unique<analysis::MultibodyDae>(*c->system);
+  return *c;
+}
+
+void count(benchmark::State& state, const Chain& c) {
+  state.counters["unknowns"] = static_cast<double>(c.y.size());
+}
+
+// The integrator's row and unknown scaling, applied in place (as BdfIntegrator::refresh does).
+void scale(const Chain& c, Eigen::SparseMatrix<double>& a) {
+  for (int col = 0; col < a.outerSize(); ++col)
+    for (Eigen::SparseMatrix<double>::InnerIterator e(a, col); e; ++e)
+      e.valueRef() *= std::pow(c.cj, c.dae->rowScaleExponent(static_cast<int>(e.row()))) *
+                      std::pow(c.cj, c.dae->unknownScaleExponent(col));
+}
+
+void BM_Residual(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  Eigen::VectorXd g(c.y.size());
+  for (auto _ : state) {
+    c.system->residual(0.0, c.y.data(), c.yp.data(), g.data());
+    benchmark::DoNotOptimize(g.data());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_Residual)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+void BM_SparseNewtonMatrix(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  Eigen::SparseMatrix<double> jac = *c.dae->pattern();
+  for (auto _ : state) {
+    c.dae->newtonMatrixSparse(0.0, c.y, c.yp, c.cj, jac);
+    benchmark::DoNotOptimize(jac.valuePtr());
+  }
+  count(state, c);
+  state.counters["colours"] = c.dae->jacobianPattern().colours();
+  state.counters["nonzeros"] = static_cast<double>(jac.nonZeros());
+}
+BENCHMARK(BM_SparseNewtonMatrix)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Arg(100)->Arg(1000)
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_DenseNewtonMatrix(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  Eigen::MatrixXd jac;
+  for (auto _ : state) {
+    c.system->newtonMatrix(0.0, c.y, c.yp, c.cj, jac);
+    benchmark::DoNotOptimize(jac.data());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_DenseNewtonMatrix)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Unit(benchmark::kMicrosecond);
+
+void BM_KluFactorSolve(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  Eigen::SparseMatrix<double> jac = *c.dae->pattern();
+  c.dae->newtonMatrixSparse(0.0, c.y, c.yp, c.cj, jac);
+  scale(c, jac);
+  solvers::KluLinearSolver klu;
+  klu.analyze(jac);
+  Eigen::VectorXd x(c.y.size());
+  for (auto _ : state) {
+    klu.factor(jac);
+    x.setOnes();
+    klu.solve(x);
+    benchmark::DoNotOptimize(x.data());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_KluFactorSolve)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Arg(100)->Arg(1000)
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_DenseLuFactorSolve(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  Eigen::SparseMatrix<double> jac = *c.dae->pattern();
+  c.dae->newtonMatrixSparse(0.0, c.y, c.yp, c.cj, jac);
+  scale(c, jac);
+  const Eigen::MatrixXd dense(jac);
+  solvers::DenseLinearSolver lu;
+  lu.analyze(jac);
+  Eigen::VectorXd x(c.y.size());
+  for (auto _ : state) {
+    lu.factor(dense);
+    x.setOnes();
+    lu.solve(x);
+    benchmark::DoNotOptimize(x.data());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_DenseLuFactorSolve)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Unit(benchmark::kMicrosecond);
+
+// The BDF step loop over 0.2 s at ERROR 1e-6, HMAX 1e-3 (set-up excluded): time per step.
+void BM_StepLoop(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  long steps = 0;
+  const char* solver = "";
+  for (auto _ : state) {
+    analysis::MultibodyDae dae(*c.system);
+    solvers::BdfSettings s;
+    s.error = 1e-6;
+    s.hmax = 1e-3;
+    s.hinit = 1e-4;
+    solvers::BdfIntegrator bdf(dae, s);
+    bdf.start(0.0, c.y, c.yp);
+    bdf.advanceTo(0.2);
+    steps = bdf.statistics().steps;
+    solver = bdf.linearSolverName();
+  }
+  count(state, c);
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["s_per_step"] = benchmark::Counter(
+      static_cast<double>(steps) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(solver);
+}
+BENCHMARK(BM_StepLoop)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+}  // namespace

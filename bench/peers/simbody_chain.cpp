@@ -1,0 +1,99 @@
+// The benchmark pendulum chains in Simbody (Debian libsimbody-dev 3.7), for scripts/bench.sh.
+//
+//   simbody_chain KIND N END ACCURACY
+//
+// KIND: chain-planar | chain-spatial. Builds the chain of bench/model_generators.cpp as a tree
+// of Pin mobilizers (the same inertias, gravity and initial state), integrates with
+// RungeKuttaMersonIntegrator at the given accuracy to END, and prints key=value lines: wall
+// times, steps, the tip's final position and velocity, and peak resident memory.
+// The four-bar row and the bushing chain are not built here (not yet).
+
+#include <sys/resource.h>
+
+#include <Simbody.h>
+#include <chrono>
+#include <cstdio>
+#include <iostream>
+#include <string>
+
+#include "../model_generators.hpp"
+
+namespace {
+
+using openmss::bench::ChainModel;
+
+SimTK::Vec3 toSimTK(const openmss::bench::Vec3& v) { return SimTK::Vec3(v[0], v[1], v[2]); }
+
+double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
+  return std::chrono::duration<double>(b - a).count();
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  using namespace SimTK;
+  if (argc != 5) {
+    std::cerr << "usage: simbody_chain chain-planar|chain-spatial N END ACCURACY\n";
+    return 64;
+  }
+  const std::string kind = argv[1];
+  if (kind != "chain-planar" && kind != "chain-spatial") {
+    std::cerr << "simbody_chain: " << kind << " is not built for Simbody (see the file header)\n";
+    return 3;
+  }
+  const int links = std::stoi(argv[2]);
+  const double end = std::stod(argv[3]);
+  const double accuracy = std::stod(argv[4]);
+  const auto t0 = std::chrono::steady_clock::now();
+  const ChainModel model = openmss::bench::modelByName(kind, links);
+
+  MultibodySystem system;
+  SimbodyMatterSubsystem matter(system);
+  GeneralForceSubsystem forces(system);
+  Force::UniformGravity gravity(forces, matter, toSimTK(model.gravity));
+  // Body frames sit at each link's proximal joint point with ground-aligned axes; the Pin's
+  // mobilizer frames turn its z axis onto the joint axis, so q = 0 is the initial configuration.
+  MobilizedBody parent = matter.Ground();
+  Vec3 parentOrigin(0);
+  MobilizedBody last;
+  for (int i = 0; i < static_cast<int>(model.bodies.size()); ++i) {
+    const auto& b = model.bodies[i];
+    const auto I = openmss::bench::inertiaTensorInGround(b);
+    const Vec3 com = toSimTK(b.centerOfMass) - toSimTK(b.proximal);
+    const Inertia aboutCom(Mat33(I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]));
+    // MassProperties wants the inertia about the body origin: shift from the centre of mass to
+    // the origin, which lies at -com from it.
+    const Body::Rigid body(MassProperties(b.mass, com, aboutCom.shiftFromMassCenter(-com, b.mass)));
+    const Rotation zOntoAxis(UnitVec3(toSimTK(model.joints[i].axis)), ZAxis);
+    const Vec3 origin = toSimTK(b.proximal);
+    MobilizedBody::Pin pin(parent, Transform(zOntoAxis, origin - parentOrigin), body,
+                           Transform(zOntoAxis, Vec3(0)));
+    parent = pin;
+    parentOrigin = origin;
+    last = pin;
+  }
+  const auto& tipBody = model.bodies.back();
+  const Vec3 tipStation = toSimTK(tipBody.distal) - toSimTK(tipBody.proximal);
+
+  system.realizeTopology();
+  State state = system.getDefaultState();
+  RungeKuttaMersonIntegrator integrator(system);
+  integrator.setAccuracy(accuracy);
+  TimeStepper stepper(system, integrator);
+  stepper.initialize(state);
+  const auto t1 = std::chrono::steady_clock::now();
+  stepper.stepTo(end);
+  const auto t2 = std::chrono::steady_clock::now();
+  const State& final = integrator.getState();
+  system.realize(final, Stage::Velocity);
+  const Vec3 p = last.findStationLocationInGround(final, tipStation);
+  const Vec3 v = last.findStationVelocityInGround(final, tipStation);
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  std::printf("engine=simbody\nsetting=RK-Merson accuracy=%g\nbuild_s=%.6f\nintegrate_s=%.6f\n",
+              accuracy, seconds(t0, t1), seconds(t1, t2));
+  std::printf("steps=%d\ntime=%.17g\n", integrator.getNumStepsTaken(), final.getTime());
+  std::printf("tip=%.17g %.17g %.17g %.17g %.17g %.17g\n", p[0], p[1], p[2], v[0], v[1], v[2]);
+  std::printf("rss_mb=%.1f\n", static_cast<double>(usage.ru_maxrss) / 1024.0);
+  return 0;
+}

@@ -1,0 +1,380 @@
+#!/usr/bin/env python3
+"""Side-by-side benchmark of OpenMSS, Simbody and MuJoCo on the generated chain models.
+
+Driven by scripts/bench.sh (which builds the programs); run it directly only with the paths of
+already built programs. For every model and size it runs tight-tolerance references, then each
+engine at a small ladder of settings, alternating engines, and measures per run: process wall
+time, integration steps, time per step, tip position error against the reference, and peak
+resident memory (ru_maxrss of the child from wait4). It prints the table and writes
+docs/performance.md and the scaling plot.
+"""
+
+import argparse
+import os
+import re
+import signal
+import subprocess
+import sys
+import tempfile
+import time
+
+# Simulated time per model, and why (see docs/performance.md, "Choices"):
+# pendulum chains start straight, tilted 0.1 rad, at rest: near-linear, non-chaotic motion, so
+# the tip state after the issue's 10 s is a meaningful accuracy measure; the four-bar row
+# reaches its singular (flat) configuration near t = 1 s, so it stops at 0.5 s; the bushing
+# chain is stiff (ω up to ~300 rad/s) and 1 s covers many periods.
+END_TIME = {"chain-planar": 10.0, "chain-spatial": 10.0, "fourbar": 0.5, "bushing": 1.0}
+PEER_MODELS = {"chain-planar", "chain-spatial"}  # what bench/peers/ builds
+
+OPENMSS_LADDER = [1e-4, 1e-5, 1e-6]  # INTEGRATOR/GSTIFF, ERROR=
+SIMBODY_LADDER = [1e-4, 1e-6]  # RungeKuttaMersonIntegrator accuracy (1e-6: the issue's figure)
+MUJOCO_LADDER = [1e-2, 1e-3]  # RK4 time step (1e-3: the issue's figure)
+OPENMSS_REFERENCE = 1e-8
+SIMBODY_REFERENCE = 1e-10
+
+
+def run_process(cmd, cwd, timeout):
+    """Runs cmd; returns (status, stdout, wall seconds, peak RSS MB) or status 'timeout'."""
+    start = time.perf_counter()
+    out_file = tempfile.TemporaryFile(mode="w+")
+    proc = subprocess.Popen(cmd, cwd=cwd, stdout=out_file, stderr=subprocess.STDOUT,
+                            start_new_session=True)
+    while True:
+        pid, status, usage = os.wait4(proc.pid, os.WNOHANG)
+        if pid != 0:
+            break
+        if time.perf_counter() - start > timeout:
+            os.killpg(proc.pid, signal.SIGKILL)
+            os.wait4(proc.pid, 0)
+            return "timeout", "", time.perf_counter() - start, 0.0
+        time.sleep(0.005)
+    wall = time.perf_counter() - start
+    proc.returncode = os.waitstatus_to_exitcode(status)
+    out_file.seek(0)
+    return proc.returncode, out_file.read(), wall, usage.ru_maxrss / 1024.0
+
+
+def decode_req_tip(req_path):
+    """Tip position and velocity from REQUEST/3..5 of the generated data set (see
+    bench/model_generators.cpp): each value is AINT(v) + 1e-6 (a + b) in three printed numbers."""
+    with open(req_path) as f:
+        lines = f.read().splitlines()
+    # Fixed-width fields (" %13.5E" x 6): three-digit exponents leave no blank between them.
+    rows = [[float(line[1 + 13 * k:14 + 13 * k]) for k in range(6)] for line in lines[-3:]]
+    values = []
+    for row in rows:
+        for half in (0, 3):
+            whole, a, b = row[half:half + 3]
+            values.append(whole + 1e-6 * (a + b))
+    return values
+
+
+def run_openmss(args, kind, n, error, workdir, timeout):
+    name = f"{kind}-{n}-e{error:g}"
+    adm = os.path.join(workdir, f"{kind}-{n}.adm")
+    if not os.path.exists(adm):
+        with open(adm, "w") as f:
+            subprocess.run([args.generate, kind, str(n)], stdout=f, check=True)
+    acf = os.path.join(workdir, name + ".acf")
+    with open(acf, "w") as f:
+        subprocess.run([args.generate, "acf", os.path.basename(adm), name, str(END_TIME[kind]),
+                        "10", f"{error:g}"], stdout=f, check=True)
+    status, out, wall, rss = run_process([args.openmss, "run", os.path.basename(acf)], workdir,
+                                         timeout)
+    result = {"engine": "OpenMSS", "setting": f"GSTIFF ERROR={error:g}", "wall": wall,
+              "rss": rss, "status": status}
+    if status == "timeout":
+        return result
+    m = re.search(r"reached t = (\S+) with (\d+) integration steps", out)
+    if status != 0 or not m or abs(float(m.group(1)) - END_TIME[kind]) > 1e-9:
+        result["status"] = "failed"
+        result["note"] = out.strip().splitlines()[-1] if out.strip() else "no output"
+        return result
+    result["steps"] = int(m.group(2))
+    result["tip"] = decode_req_tip(os.path.join(workdir, name + ".req"))
+    return result
+
+
+def run_peer(program, engine, kind, n, setting, timeout, label):
+    status, out, wall, rss = run_process([program, kind, str(n), str(END_TIME[kind]),
+                                          f"{setting:g}"], None, timeout)
+    result = {"engine": engine, "setting": label, "wall": wall, "rss": rss, "status": status}
+    if status != 0:
+        if status != "timeout":
+            result["status"] = "failed"
+            result["note"] = out.strip().splitlines()[-1] if out.strip() else "no output"
+        return result
+    fields = dict(line.split("=", 1) for line in out.splitlines() if "=" in line)
+    result["steps"] = int(fields["steps"])
+    result["tip"] = [float(x) for x in fields["tip"].split()]
+    return result
+
+
+def distance(a, b):
+    return sum((x - y) ** 2 for x, y in zip(a[:3], b[:3])) ** 0.5
+
+
+def fmt_time(s):
+    return f"{s:.3g}"
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__)
+    p.add_argument("--openmss", required=True)
+    p.add_argument("--generate", required=True)
+    p.add_argument("--mujoco")
+    p.add_argument("--simbody")
+    p.add_argument("--sizes", default="10,100,1000")
+    p.add_argument("--models", default="chain-planar,chain-spatial,fourbar,bushing")
+    p.add_argument("--timeout", type=float, default=900.0, help="seconds per OpenMSS run")
+    p.add_argument("--peer-timeout", type=float, default=300.0, help="seconds per peer run")
+    p.add_argument("--peer-max-n", type=int, default=1000000,
+                   help="skip peer runs above this size")
+    p.add_argument("--markdown", default="docs/performance.md")
+    p.add_argument("--plot", default="docs/performance-scaling.png")
+    p.add_argument("--command", default="scripts/bench.sh")
+    args = p.parse_args()
+    sizes = [int(s) for s in args.sizes.split(",")]
+    models = args.models.split(",")
+    workdir = tempfile.mkdtemp(prefix="openmss-bench-")
+    rows, references = [], []
+    timed_out = set()  # (engine, setting) or (engine, model, N) that timed out: skip the rest
+    current = {"model": None}
+
+    def guarded(engine, label, n, fn, timeout, peer):
+        key = (engine, label)
+        if peer and n > args.peer_max_n:
+            return {"engine": engine, "setting": label, "status": "skipped",
+                    "note": f"skipped, N > {args.peer_max_n} (OPENMSS_BENCH_PEER_MAX_N)"}
+        if (engine, current["model"], n) in timed_out:
+            return {"engine": engine, "setting": label, "status": "skipped",
+                    "note": f"skipped, a looser {engine} setting took > {timeout:g} s"}
+        if key in timed_out:
+            return {"engine": engine, "setting": label, "status": "skipped",
+                    "note": f"skipped, > {timeout:g} s at a smaller N"}
+        r = fn()
+        if r["status"] == "timeout":
+            timed_out.add(key)
+            timed_out.add((engine, current["model"], n))
+            r["note"] = f"skipped, > {timeout:g} s (timeout)"
+        return r
+
+    for kind in models:
+        peers = kind in PEER_MODELS
+        current["model"] = kind
+        for n in sizes:
+            print(f"== {kind} N={n} (t_end {END_TIME[kind]} s)", flush=True)
+            # References first: OpenMSS tight, and Simbody tight as the cross-check.
+            ref_om = guarded("OpenMSS", f"ref ERROR={OPENMSS_REFERENCE:g}", n,
+                             lambda: run_openmss(args, kind, n, OPENMSS_REFERENCE, workdir,
+                                                 args.timeout), args.timeout, False)
+            ref_sb = None
+            if peers and args.simbody:
+                ref_sb = guarded("Simbody", f"ref accuracy={SIMBODY_REFERENCE:g}", n,
+                                 lambda: run_peer(args.simbody, "Simbody", kind, n,
+                                                  SIMBODY_REFERENCE, args.peer_timeout,
+                                                  f"RK-Merson {SIMBODY_REFERENCE:g}"),
+                                 args.peer_timeout, True)
+            # The reference for the accuracy column: Simbody's tight run where it exists (it
+            # agrees with MuJoCo at small steps to ~1e-9 m), else OpenMSS's tight run.
+            ref = None
+            for r in (ref_sb, ref_om):
+                if r and "tip" in r:
+                    ref = r
+                    break
+            references.append({"model": kind, "n": n, "openmss": ref_om, "simbody": ref_sb,
+                               "used": ref["engine"] if ref else "none"})
+            # Measurements, alternating engines setting by setting.
+            plans = []
+            for i in range(max(len(OPENMSS_LADDER), len(SIMBODY_LADDER), len(MUJOCO_LADDER))):
+                if i < len(OPENMSS_LADDER):
+                    e = OPENMSS_LADDER[i]
+                    plans.append(("OpenMSS", f"GSTIFF ERROR={e:g}", False,
+                                  lambda e=e: run_openmss(args, kind, n, e, workdir,
+                                                          args.timeout), args.timeout))
+                if peers and args.simbody and i < len(SIMBODY_LADDER):
+                    a = SIMBODY_LADDER[i]
+                    plans.append(("Simbody", f"RK-Merson {a:g}", True,
+                                  lambda a=a: run_peer(args.simbody, "Simbody", kind, n, a,
+                                                       args.peer_timeout, f"RK-Merson {a:g}"),
+                                  args.peer_timeout))
+                if peers and args.mujoco and i < len(MUJOCO_LADDER):
+                    h = MUJOCO_LADDER[i]
+                    plans.append(("MuJoCo", f"RK4 dt={h:g}", True,
+                                  lambda h=h: run_peer(args.mujoco, "MuJoCo", kind, n, h,
+                                                       args.peer_timeout, f"RK4 dt={h:g}"),
+                                  args.peer_timeout))
+            for engine, label, peer, fn, timeout in plans:
+                r = guarded(engine, label, n, fn, timeout, peer)
+                r.update({"model": kind, "n": n})
+                if ref and "tip" in r:
+                    r["error"] = distance(r["tip"], ref["tip"])
+                rows.append(r)
+                print("   ", engine, label, r.get("status"), fmt_time(r.get("wall", 0)), "s",
+                      r.get("steps", ""), f"err {r['error']:.2e}" if "error" in r else
+                      r.get("note", ""), flush=True)
+            render(args, rows, references, sizes, final=False)
+    render(args, rows, references, sizes, final=True)
+
+
+def render(args, rows, references, sizes, final):
+    # Ratio: our time over the fastest peer run that is at least as accurate as ours; when no
+    # peer run is, over the most accurate peer run (marked *).
+    for r in rows:
+        if r["engine"] != "OpenMSS" or "error" not in r:
+            continue
+        peer_rows = [q for q in rows if q["model"] == r["model"] and q["n"] == r["n"]
+                     and q["engine"] != "OpenMSS" and "error" in q]
+        if not peer_rows:
+            continue
+        matched = [q for q in peer_rows if q["error"] <= r["error"]]
+        if matched:
+            best = min(matched, key=lambda q: q["wall"])
+            r["ratio"] = f"{r['wall'] / best['wall']:.2f}"
+        else:
+            best = min(peer_rows, key=lambda q: q["error"])
+            r["ratio"] = f"{r['wall'] / best['wall']:.2f}*"
+        r["ratio_vs"] = f"{best['engine']} {best['setting']}"
+
+    header = ("| model | N | engine | setting | wall s | steps | ms/step | tip error m | "
+              "peak RSS MB | ours / best peer |")
+    lines = [header, "|" + "---|" * 10]
+    for r in rows:
+        if "steps" in r:
+            per = 1000.0 * r["wall"] / max(r["steps"], 1)
+            lines.append(
+                f"| {r['model']} | {r['n']} | {r['engine']} | {r['setting']} | "
+                f"{fmt_time(r['wall'])} | {r['steps']} | {per:.3g} | "
+                f"{r['error']:.1e} | {r['rss']:.0f} | "
+                f"{r.get('ratio', '') + (' vs ' + r['ratio_vs'] if 'ratio' in r else '')} |")
+        else:
+            lines.append(f"| {r['model']} | {r['n']} | {r['engine']} | {r['setting']} | "
+                         f"{r.get('note', r['status'])} | | | | | |")
+    ref_lines = ["| model | N | OpenMSS ERROR=1e-8 vs Simbody 1e-10 (tip, m) | reference used |",
+                 "|---|---|---|---|"]
+    for rf in references:
+        om, sb = rf["openmss"], rf["simbody"]
+        if om and sb and "tip" in om and "tip" in sb:
+            cross = f"{distance(om['tip'], sb['tip']):.1e}"
+        else:
+            missing = [x for x in (om, sb) if x and "tip" not in x]
+            cross = "; ".join(f"{x['engine']}: {x.get('note', x['status'])}" for x in missing)
+            cross = cross or "no peer model"
+        ref_lines.append(f"| {rf['model']} | {rf['n']} | {cross} | {rf['used']} |")
+    table = "\n".join(lines)
+    if final:
+        print()
+        print(table)
+        print()
+        print("\n".join(ref_lines))
+
+    if args.markdown:
+        write_markdown(args, table, "\n".join(ref_lines), sizes)
+    if args.plot:
+        write_plot(args.plot, rows)
+
+
+def write_markdown(args, table, ref_table, sizes):
+    machine = subprocess.run(["sh", "-c", "lscpu | sed -n 's/^Model name: *//p'; nproc"],
+                             capture_output=True, text=True).stdout.split("\n")
+    text = f"""# Performance
+
+Side-by-side timings of OpenMSS, Simbody 3.7 and MuJoCo 2.2.2 (the Debian packages) on the
+benchmark models of `bench/model_generators.cpp`, produced by one command:
+
+    {args.command}
+
+Machine: {machine[0].strip() if machine else 'unknown'}, {machine[1].strip() if len(machine) > 1
+else '?'} cores, shared with other work while measured (times are wall-clock and noisy).
+Sizes: N = {', '.join(str(s) for s in sizes)}. Generated {time.strftime('%Y-%m-%d %H:%M')}.
+
+## Models and choices
+
+- **chain-planar / chain-spatial**: N slender links (1 m, 1 kg, radius 0.02 m) joined by
+  revolute joints, hanging from ground; spatial chains alternate joint axes between ground z
+  and x and lean towards x and z. Each chain starts straight, tilted 0.1 rad from the vertical,
+  at rest, and runs 10 s (the issue's horizon). The small tilt keeps the motion near-linear,
+  so it is not chaotic and the tip state at 10 s is a meaningful accuracy measure; a chain
+  released from horizontal would diverge between any two integrators within seconds.
+- **fourbar**: the IFToMM benchmark A02 "N four-bar mechanism" (N square windows of unit
+  1 kg rods, B0 moving at 1 m/s, gravity -y). It runs 0.5 s, before the flat singular
+  configuration (about t = 1 s), whose passage depends on the integrator rather than on
+  accuracy. OpenMSS only: MuJoCo closes loops with soft constraints, and the Simbody program
+  does not build loops yet.
+- **bushing**: N free 1 kg blocks each held to the previous one by a BUSHING and a
+  translational SPRINGDAMPER (6N DOF, stiff), 1 s. OpenMSS only (no MuJoCo bushing element;
+  Simbody's LinearBushing uses Euler angles, not ADAMS's small-angle rotations).
+- **Settings**: OpenMSS GSTIFF at ERROR = {', '.join(f'{e:g}' for e in OPENMSS_LADDER)};
+  Simbody RungeKuttaMersonIntegrator at accuracy {', '.join(f'{a:g}' for a in SIMBODY_LADDER)}
+  (1e-6 is the issue's figure); MuJoCo RK4 at dt = {', '.join(f'{h:g}' for h in MUJOCO_LADDER)}
+  (1e-3 is the issue's figure; 1e-2 is the coarse step that still reaches a comparable
+  accuracy). Engines alternate setting by setting, so slow drifts of the machine load hit all.
+- **Wall time** is the whole process (model construction, initial conditions, integration,
+  OpenMSS's 10 output steps), measured from outside; **peak RSS** is the child's ru_maxrss.
+- **Accuracy**: distance of the tip (end of the last link; B0 for the four-bar row; last
+  block's far end for the bushing chain) at the final time from a reference: Simbody at
+  accuracy 1e-10 where the model exists in Simbody, else OpenMSS at ERROR = 1e-8. The
+  references are cross-checked below. OpenMSS reads its tip from REQUEST/3..5, which carry each
+  value split into exactly printable pieces (the .req file prints six digits).
+- **ours / best peer**: our wall time over the fastest peer run that is at least as accurate;
+  `*` marks rows where no peer run was as accurate and the most accurate one is used. Rows
+  reading "skipped" hit the time limit (`timeout`) or a size cap, and larger sizes of the same
+  setting are then skipped rather than left to hang.
+
+## Results
+
+{table}
+
+### References
+
+{ref_table}
+
+## Scaling
+
+![time per step against N](performance-scaling.png)
+
+## Reproducing
+
+    scripts/bench.sh            # N = 10, 100, 1000
+    scripts/bench.sh --quick    # N = 10, 100
+
+Environment knobs: `OPENMSS_BENCH_TIMEOUT` (seconds per OpenMSS run, default 900),
+`OPENMSS_BENCH_PEER_TIMEOUT` (seconds per peer run, default 300), `OPENMSS_BENCH_PEER_MAX_N`
+(skip peer runs above this N, e.g. 100 to leave MuJoCo's dense O(N^3) N = 1000 out),
+`OPENMSS_BENCH_BUILD_DIR` (default build-bench). The peer programs are
+`bench/peers/mujoco_chain.cpp` and `bench/peers/simbody_chain.cpp`, compiled by the script with
+g++; they build the models from the same generator source as the ADAMS data sets.
+"""
+    with open(args.markdown, "w") as f:
+        f.write(text)
+
+
+def write_plot(path, rows):
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        print("matplotlib missing: no plot", file=sys.stderr)
+        return
+    fig, ax = plt.subplots(figsize=(7, 5))
+    series = {}
+    for r in rows:
+        if "steps" in r:
+            key = f"{r['engine']} {r['setting']} ({r['model']})"
+            series.setdefault(key, []).append((r["n"], 1000.0 * r["wall"] / max(r["steps"], 1)))
+    for key, pts in sorted(series.items()):
+        pts.sort()
+        if len(pts) > 1:
+            ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", label=key)
+    ax.set_xlabel("N (links)")
+    ax.set_ylabel("wall time per step (ms)")
+    ax.set_title("Time per step against model size")
+    ax.grid(True, which="both", alpha=0.3)
+    ax.legend(fontsize=6)
+    fig.tight_layout()
+    fig.savefig(path, dpi=120)
+
+
+if __name__ == "__main__":
+    main()

@@ -1,0 +1,35 @@
+#pragma once
+// Values of the analysis variables MODE, HSIZE, ORDER, NJAC and NRHS: reads of the session's
+// AnalysisStatus, constant with respect to the state (zero derivatives).
+
+#include "model/model.hpp"
+
+namespace openmss::mechanics {
+
+// Returns false when `ms` is not an analysis variable.
+template <class T>
+bool analysisStatusMeasure(const model::Model& m, const model::Measure& ms, T* out) {
+  using K = model::MeasureKind;
+  const model::AnalysisStatus& s = m.analysisStatus;
+  switch (ms.kind) {
+    case K::AnalysisMode:
+      *out = T(static_cast<double>(static_cast<int>(s.mode)));
+      return true;
+    case K::StepSize:
+      *out = T(s.stepSize);
+      return true;
+    case K::IntegratorOrder:
+      *out = T(static_cast<double>(s.order));
+      return true;
+    case K::JacobianCount:
+      *out = T(static_cast<double>(s.jacobianEvaluations));
+      return true;
+    case K::ResidualCount:
+      *out = T(static_cast<double>(s.residualEvaluations));
+      return true;
+    default:
+      return false;
+  }
+}
+
+}  // namespace openmss::mechanics

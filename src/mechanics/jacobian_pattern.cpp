@@ -1,0 +1,348 @@
+#include "mechanics/jacobian_pattern.hpp"
+
+#include <algorithm>
+#include <numeric>
+
+#include "mechanics/multibody_system.hpp"
+
+namespace openmss::mechanics {
+namespace {
+
+using L = StateLayout;
+
+// The columns one quantity depends on; `all` when some dependency could not be resolved.
+struct Dependencies {
+  std::vector<int> columns;
+  bool all = false;
+};
+
+class PatternBuilder {
+ public:
+  explicit PatternBuilder(const MultibodySystem& s)
+      : s_(s), m_(s.model()), l_(s.layout()), rows_(static_cast<size_t>(l_.size())),
+        claimed_(static_cast<size_t>(l_.size()), false), dense_(static_cast<size_t>(l_.size()), false) {}
+
+  std::vector<std::vector<int>> build() {
+    for (int b = 0; b < l_.bodies; ++b) bodyRows(b);
+    forceElements();
+    userEquations();
+    constraints();
+    // Rows nobody here knows how to fill (equations added to the residual without a pattern
+    // rule) are dense: too full is slow, too sparse is wrong.
+    const int n = l_.size();
+    std::vector<int> every(static_cast<size_t>(n));
+    std::iota(every.begin(), every.end(), 0);
+    for (int r = 0; r < n; ++r)
+      if (!claimed_[r] || dense_[r]) rows_[r] = every;
+    return std::move(rows_);
+  }
+
+ private:
+  int bodyOfMarker(int marker) const {
+    if (marker < 0) return -1;
+    return m_.parts[m_.markers[marker].part].body;
+  }
+  // Position, orientation, velocity and angular velocity of body b (what marker states read).
+  void addKinematics(Dependencies& d, int b) const {
+    if (b < 0) return;
+    for (int c = 0; c < L::kMu; ++c) d.columns.push_back(l_.body(b) + c);
+  }
+  void addMarkerKinematics(Dependencies& d, int marker) const { addKinematics(d, bodyOfMarker(marker)); }
+  // Position and orientation of body b (what constraint geometry reads).
+  void addPose(Dependencies& d, int b) const {
+    if (b < 0) return;
+    for (int c = 0; c < L::kV; ++c) d.columns.push_back(l_.body(b) + c);
+  }
+  void addVariable(Dependencies& d, int variable) const { d.columns.push_back(l_.userAlg(variable)); }
+  void addLinearOutput(Dependencies& d, int element) const {
+    const model::LinearStateElement& e = m_.linearStates[element];
+    for (int c = 0; c < e.a.rows(); ++c) d.columns.push_back(l_.userDiff(e.firstState + c));
+    if (e.uArray >= 0)
+      for (int v : m_.arrays[e.uArray].variables) addVariable(d, v);
+  }
+
+  // What a measure of a function expression reads (mechanics/measures.hpp, user_measures.hpp).
+  void addMeasure(Dependencies& d, const model::Measure& ms) const {
+    using K = model::MeasureKind;
+    switch (ms.kind) {
+      case K::Time:
+        return;
+      case K::VarVal:
+        addVariable(d, ms.element);
+        return;
+      case K::Dif:
+        d.columns.push_back(l_.userDiff(ms.element));
+        return;
+      case K::Dif1:
+        d.columns.push_back(l_.userAlg(static_cast<int>(m_.variables.size()) + ms.element));
+        return;
+      case K::AryVal: {
+        const model::DataArray& a = m_.arrays[ms.element];
+        switch (a.kind) {
+          case model::DataArray::Kind::X:
+            d.columns.push_back(l_.userDiff(m_.linearStates[a.owner].firstState + ms.component - 1));
+            return;
+          case model::DataArray::Kind::U:
+            addVariable(d, a.variables[ms.component - 1]);
+            return;
+          case model::DataArray::Kind::Y:
+            addLinearOutput(d, a.owner);
+            return;
+          case model::DataArray::Kind::IC:
+          case model::DataArray::Kind::Constants:
+            return;
+        }
+        d.all = true;
+        return;
+      }
+      case K::PinVal:
+        addVariable(d, m_.pinputs[ms.element].variables[ms.component - 1]);
+        return;
+      case K::PouVal:
+        addVariable(d, m_.poutputs[ms.element].variables[ms.component - 1]);
+        return;
+      // Marker measures read the states of the I, J and K markers' bodies.
+      case K::DX: case K::DY: case K::DZ: case K::DM:
+      case K::VX: case K::VY: case K::VZ: case K::VM: case K::VR:
+      case K::WX: case K::WY: case K::WZ: case K::WM:
+      case K::AX: case K::AY: case K::AZ:
+      case K::PSI: case K::THETA: case K::PHI: case K::YAW: case K::PITCH: case K::ROLL:
+      case K::Orient: case K::IncludedAngle:
+        addMarkerKinematics(d, ms.i);
+        addMarkerKinematics(d, ms.j);
+        addMarkerKinematics(d, ms.k);
+        return;
+      default:
+        // Accelerations, reaction forces and any kind added later: not resolved here.
+        d.all = true;
+        return;
+    }
+  }
+  void addFunction(Dependencies& d, const model::BoundExpression& f) const {
+    for (const model::Measure& ms : f.measures) addMeasure(d, ms);
+  }
+
+  void addRow(int row, const Dependencies& d) {
+    claimed_[row] = true;
+    if (d.all) dense_[row] = true;
+    rows_[row].insert(rows_[row].end(), d.columns.begin(), d.columns.end());
+  }
+  void addEntry(int row, int column) {
+    claimed_[row] = true;
+    rows_[row].push_back(column);
+  }
+  // The force and moment balance rows of body b (nothing for ground).
+  void addForceRows(int b, const Dependencies& d) {
+    if (b < 0) return;
+    for (int c = 0; c < 3; ++c) {
+      addRow(l_.body(b) + L::kV + c, d);
+      addRow(l_.body(b) + L::kW + c, d);
+    }
+  }
+
+  // Kinematic equations, Newton-Euler left-hand sides and the normalisation of body b.
+  void bodyRows(int b) {
+    const int o = l_.body(b);
+    for (int c = 0; c < 3; ++c) {
+      addEntry(o + L::kR + c, o + L::kR + c);
+      addEntry(o + L::kR + c, o + L::kV + c);
+    }
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c) addEntry(o + L::kE + r, o + L::kE + c);
+      for (int c = 0; c < 3; ++c) addEntry(o + L::kE + r, o + L::kW + c);
+      addEntry(o + L::kE + r, o + L::kMu);
+    }
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) {
+        addEntry(o + L::kV + r, o + L::kV + c);
+        addEntry(o + L::kW + r, o + L::kW + c);
+      }
+    for (int c = 0; c < 4; ++c) addEntry(o + L::kMu, o + L::kE + c);
+  }
+
+  // Every applied force element loads the bodies of its I and J (JFLOAT) markers with a value
+  // that reads the bodies of all its markers and whatever its functions read; applying it reads
+  // the loaded body's pose too.
+  void forceElements() {
+    const ForceElements& fe = s_.forceElements();
+    for (const ForceElementRef& e : fe.elements()) {
+      Dependencies d;
+      const int i = fe.iMarker(e), j = fe.jMarker(e);
+      addMarkerKinematics(d, i);
+      addMarkerKinematics(d, j);
+      switch (e.kind) {
+        case ForceElementKind::SForce:
+          addFunction(d, m_.sforces[e.index].function);
+          break;
+        case ForceElementKind::SpringDamper:
+        case ForceElementKind::LinearField:
+          break;
+        case ForceElementKind::VectorForce: {
+          const model::VectorForce& v = m_.vectorForces[e.index];
+          addMarkerKinematics(d, v.rmMarker);
+          for (const auto& component : v.components)
+            if (component) addFunction(d, *component);
+          break;
+        }
+        default:
+          d.all = true;
+          break;
+      }
+      addForceRows(bodyOfMarker(i), d);
+      addForceRows(bodyOfMarker(j), d);
+    }
+  }
+
+  // VARIABLE, DIFF, LSE/TFSISO rows (mechanics/user_equations.hpp).
+  void userEquations() {
+    const int nv = static_cast<int>(m_.variables.size());
+    for (int k = 0; k < nv; ++k) {
+      Dependencies d;
+      d.columns.push_back(l_.userAlg(k));
+      addFunction(d, m_.variables[k].function);
+      addRow(l_.userAlg(k), d);
+    }
+    for (int k = 0; k < static_cast<int>(m_.diffs.size()); ++k) {
+      const int state = l_.userDiff(k), rate = l_.userAlg(nv + k);
+      addEntry(state, state);
+      addEntry(state, rate);
+      Dependencies d;
+      d.columns.push_back(rate);
+      addFunction(d, m_.diffs[k].function);
+      addRow(rate, d);
+    }
+    for (int el = 0; el < static_cast<int>(m_.linearStates.size()); ++el) {
+      const model::LinearStateElement& e = m_.linearStates[el];
+      Dependencies d;
+      for (int c = 0; c < e.a.rows(); ++c) d.columns.push_back(l_.userDiff(e.firstState + c));
+      if (e.uArray >= 0)
+        for (int v : m_.arrays[e.uArray].variables) addVariable(d, v);
+      for (int i = 0; i < e.a.rows(); ++i) addRow(l_.userDiff(e.firstState + i), d);
+    }
+  }
+
+  // Constraint k: its row reads the poses of its markers' bodies (and its own multiplier while
+  // inactive); its reaction C^T lambda loads those bodies' force rows with the same poses and
+  // lambda_k. Activity may change between analyses: the pattern holds both forms.
+  void constraints() {
+    const auto& eqs = s_.constraints().equations();
+    for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
+      const ConstraintEquation& eq = eqs[k];
+      Dependencies d;
+      for (int side = 0; side < eq.markerCount(); ++side) addPose(d, bodyOfMarker(eq.marker(side)));
+      using K = ConstraintEquation::Kind;
+      switch (eq.kind) {
+        case K::Point: case K::Dot: case K::Along: case K::MotionRotation:
+        case K::MotionTranslation: case K::MotionAngle: case K::Convel: case K::RackPin:
+        case K::Screw: case K::Coupled:
+          break;  // geometry of the marker frames (and a function of time)
+        default:
+          d.all = true;  // an equation kind whose reads are not known here
+          break;
+      }
+      const int lambda = l_.lambda(k);
+      addRow(lambda, d);
+      addEntry(lambda, lambda);
+      d.columns.push_back(lambda);
+      for (int side = 0; side < eq.markerCount(); ++side) addForceRows(bodyOfMarker(eq.marker(side)), d);
+    }
+  }
+
+  const MultibodySystem& s_;
+  const model::Model& m_;
+  const StateLayout& l_;
+  std::vector<std::vector<int>> rows_;
+  std::vector<bool> claimed_, dense_;
+};
+
+}  // namespace
+
+Eigen::SparseMatrix<double> JacobianPattern::matrix() const {
+  Eigen::SparseMatrix<double> a(size, size);
+  std::vector<Eigen::Triplet<double>> entries;
+  entries.reserve(rowIndex.size());
+  for (int c = 0; c < size; ++c)
+    for (int k = columnStart[c]; k < columnStart[c + 1]; ++k) entries.emplace_back(rowIndex[k], c, 0.0);
+  a.setFromTriplets(entries.begin(), entries.end());
+  a.makeCompressed();
+  return a;
+}
+
+JacobianPattern patternFromRows(int size, std::vector<std::vector<int>> rows) {
+  JacobianPattern p;
+  p.size = size;
+  std::vector<int> count(static_cast<size_t>(size) + 1, 0);
+  for (int r = 0; r < size; ++r) {
+    auto& row = rows[r];
+    std::sort(row.begin(), row.end());
+    row.erase(std::unique(row.begin(), row.end()), row.end());
+    if (static_cast<int>(row.size()) == size) ++p.denseRows;
+    for (int c : row) ++count[c + 1];
+  }
+  for (int c = 0; c < size; ++c) count[c + 1] += count[c];
+  p.columnStart = count;
+  p.rowIndex.resize(static_cast<size_t>(count[size]));
+  std::vector<int> next(count.begin(), count.end() - 1);
+  for (int r = 0; r < size; ++r)  // rows ascending, so each column's rows come out sorted
+    for (int c : rows[r]) p.rowIndex[next[c]++] = r;
+  colourColumns(p);
+  return p;
+}
+
+JacobianPattern newtonMatrixPattern(const MultibodySystem& system) {
+  PatternBuilder builder(system);
+  return patternFromRows(system.layout().size(), builder.build());
+}
+
+void colourColumns(JacobianPattern& p) {
+  const int n = p.size;
+  std::vector<int> colour(static_cast<size_t>(n), -1);
+  int colours = 0;
+  if (p.denseRows > 0) {
+    // Every pair of columns shares a dense row: one colour per column.
+    std::iota(colour.begin(), colour.end(), 0);
+    colours = n;
+  } else {
+    // Row-wise copy of the pattern, to find the columns that share a row with column c.
+    std::vector<int> rowStart(static_cast<size_t>(n) + 1, 0), columnIndex(p.rowIndex.size());
+    for (int r : p.rowIndex) ++rowStart[r + 1];
+    for (int r = 0; r < n; ++r) rowStart[r + 1] += rowStart[r];
+    std::vector<int> next(rowStart.begin(), rowStart.end() - 1);
+    for (int c = 0; c < n; ++c)
+      for (int k = p.columnStart[c]; k < p.columnStart[c + 1]; ++k)
+        columnIndex[next[p.rowIndex[k]]++] = c;
+    // forbiddenBy[colour] == c marks a colour taken by a neighbour of column c.
+    std::vector<int> forbiddenBy(static_cast<size_t>(n) + 1, -1);
+    for (int c = 0; c < n; ++c) {
+      for (int k = p.columnStart[c]; k < p.columnStart[c + 1]; ++k) {
+        const int r = p.rowIndex[k];
+        for (int q = rowStart[r]; q < rowStart[r + 1]; ++q)
+          if (colour[columnIndex[q]] >= 0) forbiddenBy[colour[columnIndex[q]]] = c;
+      }
+      int chosen = 0;
+      while (forbiddenBy[chosen] == c) ++chosen;
+      colour[c] = chosen;
+      colours = std::max(colours, chosen + 1);
+    }
+  }
+  p.colourStart.assign(static_cast<size_t>(colours) + 1, 0);
+  for (int c = 0; c < n; ++c) ++p.colourStart[colour[c] + 1];
+  for (int k = 0; k < colours; ++k) p.colourStart[k + 1] += p.colourStart[k];
+  p.colourColumns.resize(static_cast<size_t>(n));
+  std::vector<int> next(p.colourStart.begin(), p.colourStart.end() - 1);
+  for (int c = 0; c < n; ++c) p.colourColumns[next[colour[c]]++] = c;
+}
+
+void makeRowsDense(JacobianPattern& p, const std::vector<int>& denseRows) {
+  const int n = p.size;
+  std::vector<std::vector<int>> rows(static_cast<size_t>(n));
+  for (int c = 0; c < n; ++c)
+    for (int k = p.columnStart[c]; k < p.columnStart[c + 1]; ++k) rows[p.rowIndex[k]].push_back(c);
+  for (int r : denseRows) {
+    rows[r].resize(static_cast<size_t>(n));
+    std::iota(rows[r].begin(), rows[r].end(), 0);
+  }
+  p = patternFromRows(n, std::move(rows));
+}
+
+}  // namespace openmss::mechanics

@@ -1,0 +1,48 @@
+#pragma once
+// Sparse solves of the saddle-point systems of the set-up analyses (docs/theory.md §7):
+//   [H  C^T] [x]   [f]
+//   [C   0 ] [z] = [g]
+// with H block diagonal (the mass matrix for accelerations and multipliers, the weights of the
+// least-change velocity and position problems) and C the sparse constraint Jacobian. The
+// assembled matrix is factored by a sparse LU (Eigen::SparseLU: COLAMD column ordering, partial
+// pivoting by rows, so the indefinite matrix needs no special treatment). The symbolic
+// analysis is kept and reused as long as the pattern is the same; the pattern depends on the
+// model only (explicit zeros are kept), so a run analyses once and factors per output step.
+
+#include <vector>
+
+#include <Eigen/SparseCore>
+#include <Eigen/SparseLU>
+
+namespace openmss::mechanics {
+
+class SaddlePointSolver {
+ public:
+  using SparseMatrix = Eigen::SparseMatrix<double>;
+
+  // Factors the matrix of H (n x n) and C (m x n). False when it is singular: an exactly zero
+  // pivot, or (checked by solve) a solution that does not reproduce the right-hand side.
+  bool factor(const SparseMatrix& h, const SparseMatrix& c);
+  // x (n) and z (m) for the right-hand side (f, g). False when the solution is not finite or
+  // its relative residual exceeds kResidualTolerance (a numerically singular matrix).
+  bool solve(const Eigen::VectorXd& f, const Eigen::VectorXd& g, Eigen::VectorXd& x,
+             Eigen::VectorXd& z) const;
+
+  // Largest |K s - b| / (|K| |s| + |b|) (infinity norms) accepted from the LU solve. A
+  // backward-stable solve of a regular matrix gives ~1e-16 here; a matrix that the LU
+  // factored through a round-off pivot gives O(1).
+  static constexpr double kResidualTolerance = 1e-9;
+
+  int symbolicAnalyses() const { return analyses_; }
+
+ private:
+  SparseMatrix kkt_;
+  Eigen::SparseLU<SparseMatrix, Eigen::COLAMDOrdering<int>> lu_;
+  std::vector<int> outer_, inner_;  // the pattern lu_ has analysed
+  int n_ = 0, m_ = 0;
+  int analyses_ = 0;
+  double kktNorm_ = 0.0;
+  bool factored_ = false;
+};
+
+}  // namespace openmss::mechanics

@@ -1,0 +1,302 @@
+#include "solvers/hht_integrator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace openmss::solvers {
+namespace {
+
+using Role = DaeProblem::Role;
+
+// Corrector convergence, in units of the error tolerance (as the BDF family's).
+constexpr double kTightChange = 1e-9;
+
+int roleCode(Role r) { return static_cast<int>(r); }
+
+}  // namespace
+
+HhtIntegrator::HhtIntegrator(DaeProblem& problem, const HhtSettings& settings)
+    : problem_(problem), settings_(settings) {}
+
+void HhtIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+  const int n = problem_.size();
+  role_.resize(n);
+  for (int i = 0; i < n; ++i) role_(i) = roleCode(problem_.role(i));
+  t_ = tPrevious_ = t0;
+  y_ = yPrev_ = y0;
+  yp_ = ypPrev_ = yp0;
+  // Newmark's acceleration of a position is q'' = d/dt f(y) for its kinematic row
+  // G_q = q' - f(y): q'' = -dG_q/dy . y', the directional derivative along the consistent
+  // y' (multipliers held: their rates do not enter the kinematic rows).
+  acc_ = Eigen::VectorXd::Zero(n);
+  Eigen::VectorXd dir = yp0, gPlus(n), gMinus(n);
+  for (int i = 0; i < n; ++i)
+    if (role_(i) == roleCode(Role::Algebraic)) dir(i) = 0.0;
+  const double size = dir.lpNorm<Eigen::Infinity>();
+  if (size > 0.0) {
+    const double eps = 1e-6 * std::max(1.0, y0.lpNorm<Eigen::Infinity>()) / size;
+    problem_.residual(t0, y0 + eps * dir, yp0, gPlus);
+    problem_.residual(t0, y0 - eps * dir, yp0, gMinus);
+    stats_.residualEvaluations += 2;
+    for (int i = 0; i < n; ++i)
+      if (role_(i) == roleCode(Role::Position)) acc_(i) = -(gPlus(i) - gMinus(i)) / (2.0 * eps);
+  }
+  h_ = settings_.hinit > 0 ? settings_.hinit
+                           : (std::isfinite(settings_.hmax) ? settings_.hmax / 100.0 : 1e-3);
+  h_ = std::min(h_, settings_.hmax);
+  for (auto* v : {&yNew_, &ypNew_, &yPred_, &ypPred_, &g_, &gOld_, &dy_, &slope_}) v->resize(n);
+  rowScale_ = Eigen::VectorXd::Ones(n);
+  colScale_ = Eigen::VectorXd::Ones(n);
+  haveJacobian_ = jacobianCurrent_ = false;
+}
+
+double HhtIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& ref,
+                                   bool errorOnly) const {
+  double worst = 0.0;
+  for (int i = 0; i < v.size(); ++i) {
+    if (errorOnly ? !problem_.errorControlled(i) : role_(i) == roleCode(Role::Algebraic)) continue;
+    const double r = std::abs(v(i)) / (settings_.error * (1.0 + std::abs(ref(i))));
+    if (std::isnan(r)) return r;
+    worst = std::max(worst, r);
+  }
+  return worst;
+}
+
+void HhtIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy) {
+  auto worse = [](double candidate, double current) {
+    return !std::isfinite(candidate) ? std::isfinite(current) : candidate > current;
+  };
+  lastWorstEq_ = lastWorstVar_ = -1;
+  lastWorstRes_ = lastWorstChange_ = 0.0;
+  for (int i = 0; i < g.size(); ++i) {
+    if (worse(std::abs(g(i)), lastWorstRes_)) {
+      lastWorstRes_ = std::abs(g(i));
+      lastWorstEq_ = i;
+    }
+    if (role_(i) != roleCode(Role::Algebraic) && worse(std::abs(dy(i)), lastWorstChange_)) {
+      lastWorstChange_ = std::abs(dy(i));
+      lastWorstVar_ = i;
+    }
+  }
+}
+
+// The corrector's unknown is y; y' follows linearly, y'_i = y'pred_i + slope_i (y_i - ypred_i):
+// slope 1/(h gamma) for velocities and first-order states (gamma rule), gamma/(h beta) for
+// positions (beta rule with q' as Newmark's velocity), 0 for multipliers. With A = dG/dy and
+// B = dG/dy', column i of the Newton matrix is A_i + slope_i B_i, except that the alpha-shifted
+// force-balance rows take (1 + alpha) A: their old-step part depends on y' only.
+void HhtIntegrator::formNewtonMatrix(double tNew, double h) {
+  const int n = problem_.size();
+  problem_.newtonMatrix(tNew, yPred_, ypPred_, 0.0, jac_);   // A
+  problem_.newtonMatrix(tNew, yPred_, ypPred_, 1.0, jacB_);  // A + B
+  ++stats_.jacobianEvaluations;
+  jacB_ -= jac_;
+  const double alpha = settings_.alpha;
+  for (int r = 0; r < n; ++r)
+    if (role_(r) == roleCode(Role::Velocity)) jac_.row(r) *= 1.0 + alpha;
+  for (int c = 0; c < n; ++c) jac_.col(c) += slope_(c) * jacB_.col(c);
+  // Balance as the BDF family does, with 1/h in the place of cj.
+  const double s = 1.0 / h;
+  for (int i = 0; i < n; ++i) {
+    rowScale_(i) = std::pow(s, problem_.rowScaleExponent(i));
+    colScale_(i) = std::pow(s, problem_.unknownScaleExponent(i));
+  }
+  jac_ = rowScale_.asDiagonal() * jac_ * colScale_.asDiagonal();
+  lu_.compute(jac_);
+  hJacobian_ = h;
+  haveJacobian_ = jacobianCurrent_ = true;
+}
+
+bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm) {
+  *newtonFailed = false;
+  const int n = problem_.size();
+  const double tNew = t_ + h;
+  const double beta = settings_.beta, gamma = settings_.gamma, alpha = settings_.alpha;
+  // Predictor: Newmark's update with the acceleration held at its last value.
+  for (int i = 0; i < n; ++i) {
+    switch (static_cast<Role>(role_(i))) {
+      case Role::Position:
+        ypPred_(i) = yp_(i) + h * acc_(i);
+        yPred_(i) = y_(i) + h * yp_(i) + 0.5 * h * h * acc_(i);
+        slope_(i) = gamma / (h * beta);
+        break;
+      case Role::Velocity:
+      case Role::FirstOrder:
+        ypPred_(i) = yp_(i);
+        yPred_(i) = y_(i) + h * yp_(i);
+        slope_(i) = 1.0 / (h * gamma);
+        break;
+      case Role::Algebraic:
+        ypPred_(i) = yp_(i);
+        yPred_(i) = y_(i);
+        slope_(i) = 0.0;
+        break;
+    }
+  }
+  if (!haveJacobian_ || std::abs(h / hJacobian_ - 1.0) > 0.2) formNewtonMatrix(tNew, h);
+
+  for (int attempt = 0; attempt < 2; ++attempt) {
+    yNew_ = yPred_;
+    double previous = 0.0, rate = 0.0;
+    bool converged = false;
+    for (int it = 0; it < settings_.maxit; ++it) {
+      ypNew_ = ypPred_ + slope_.cwiseProduct(yNew_ - yPred_);
+      if (settings_.patternGiven && (it == 0 ? !jacobianCurrent_ : settings_.pattern[it % 10])) {
+        std::swap(yPred_, yNew_);  // formNewtonMatrix linearises at yPred_
+        std::swap(ypPred_, ypNew_);
+        formNewtonMatrix(tNew, h);
+        std::swap(yPred_, yNew_);
+        std::swap(ypPred_, ypNew_);
+      }
+      problem_.residual(tNew, yNew_, ypNew_, g_);
+      ++stats_.residualEvaluations;
+      if (alpha != 0.0) {
+        // HHT: force balance = (1 + alpha) G(t_n+1) - alpha G(t_n, y_n, y'_n+1): inertia at the
+        // new step, applied and constraint forces weighted between the steps.
+        problem_.residual(t_, y_, ypNew_, gOld_);
+        ++stats_.residualEvaluations;
+        for (int i = 0; i < n; ++i)
+          if (role_(i) == roleCode(Role::Velocity))
+            g_(i) = (1.0 + alpha) * g_(i) - alpha * gOld_(i);
+      }
+      dy_ = colScale_.cwiseProduct(lu_.solve(rowScale_.cwiseProduct(g_)));
+      yNew_ -= dy_;
+      const double size = weightedNorm(dy_, yNew_, false);
+      noteWorst(g_, dy_);
+      if (!std::isfinite(size)) break;
+      notifyIteration(
+          {tNew, h, 2, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_, lastWorstChange_});
+      if (it > 0) rate = size / std::max(previous, 1e-300);
+      previous = size;
+      if (size <= kTightChange ||
+          (it > 0 && rate < 0.9 && rate / (1.0 - rate) * size <= kTightChange)) {
+        converged = true;
+        break;
+      }
+      if (it > 0 && rate >= 0.9 && size <= 1e-3) {  // stalled at round-off
+        converged = true;
+        break;
+      }
+      if (it > 1 && rate > 0.9) break;
+    }
+    if (converged) break;
+    if (jacobianCurrent_ || attempt == 1) {
+      *newtonFailed = true;
+      return false;
+    }
+    formNewtonMatrix(tNew, h);
+  }
+  ypNew_ = ypPred_ + slope_.cwiseProduct(yNew_ - yPred_);
+  // Local error: positions (beta - 1/6) h^3 q''' with q''' from the change of q'' over the
+  // step; first-order states max(|gamma - 1/2|, 1/12) h^2 y'' likewise.
+  dy_.setZero();
+  for (int i = 0; i < n; ++i) {
+    if (!problem_.errorControlled(i)) continue;
+    if (role_(i) == roleCode(Role::Position)) {
+      const double accNew = (ypNew_(i) - yp_(i) - h * (1.0 - gamma) * acc_(i)) / (h * gamma);
+      dy_(i) = std::abs(beta - 1.0 / 6.0) * h * h * (accNew - acc_(i));
+    } else if (role_(i) != roleCode(Role::Algebraic)) {
+      dy_(i) = std::max(std::abs(gamma - 0.5), 1.0 / 12.0) * h * (ypNew_(i) - yp_(i));
+    }
+  }
+  *errorNorm = weightedNorm(dy_, yNew_, true);
+  if (!std::isfinite(*errorNorm)) {
+    *newtonFailed = true;
+    return false;
+  }
+  return *errorNorm <= 1.0;
+}
+
+bool HhtIntegrator::step(double tout) {
+  const double eps = 1e-12 * std::max(1.0, std::abs(tout));
+  const double hmin =
+      settings_.hmin > 0 ? settings_.hmin : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
+  while (t_ < tout - eps) {
+    double h = std::min(h_, settings_.hmax);
+    if (t_ + h >= tout - eps)
+      h = tout - t_;
+    else if (t_ + 2.0 * h > tout)
+      h = 0.5 * (tout - t_);
+    bool newtonFailed = false;
+    double err = 0.0;
+    using Event = StepInfo::Event;
+    notifyStep({Event::Attempt, stats_.steps + 1, 2, t_, h, 0.0});
+    if (!attemptStep(h, &newtonFailed, &err)) {
+      notifyStep({newtonFailed ? Event::CorrectorFailed : Event::ErrorTestFailed, stats_.steps + 1,
+                  2, t_, h, err});
+      if (newtonFailed) {
+        ++stats_.newtonFailures;
+        h_ = 0.25 * h;
+        jacobianCurrent_ = false;
+      } else {
+        ++stats_.rejectedSteps;
+        h_ = h * std::clamp(0.9 * std::pow(1.0 / err, 1.0 / 3.0), 0.2, 0.9);
+      }
+      if (h_ < hmin) {
+        failure_ = {t_,
+                    h_,
+                    newtonFailed ? "the corrector did not converge"
+                                 : "the local error stays above the tolerance",
+                    lastWorstEq_,
+                    lastWorstRes_,
+                    lastWorstVar_,
+                    lastWorstChange_};
+        return false;
+      }
+      continue;
+    }
+    notifyStep({Event::Accepted, stats_.steps + 1, 2, t_, h, err});
+    const double gamma = settings_.gamma;
+    for (int i = 0; i < y_.size(); ++i)
+      if (role_(i) == roleCode(Role::Position))
+        acc_(i) = (ypNew_(i) - yp_(i) - h * (1.0 - gamma) * acc_(i)) / (h * gamma);
+    tPrevious_ = t_;
+    yPrev_ = y_;
+    ypPrev_ = yp_;
+    t_ += h;
+    if (std::abs(t_ - tout) <= eps) t_ = tout;
+    y_ = yNew_;
+    yp_ = ypNew_;
+    ++stats_.steps;
+    jacobianCurrent_ = false;
+    const double ratio = 0.9 * std::pow(1.0 / std::max(err, 1e-10), 1.0 / 3.0);
+    if (ratio >= 1.5)
+      h_ = h * std::min(ratio, 2.0);
+    else if (ratio < 1.0)
+      h_ = h * std::max(ratio, 0.5);
+    else
+      h_ = std::max(h, h_);
+    h_ = std::min(h_, settings_.hmax);
+    stats_.order = 2;
+    stats_.stepSize = h;
+    return true;
+  }
+  return true;
+}
+
+void HhtIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const {
+  const double h = t_ - tPrevious_;
+  if (h <= 0.0) {
+    y = y_;
+    yp = yp_;
+    return;
+  }
+  const double x = (s - tPrevious_) / h;
+  const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+  const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+  const double d00 = 6 * x * x - 6 * x, d10 = 3 * x * x - 4 * x + 1;
+  const double d01 = -d00, d11 = 3 * x * x - 2 * x;
+  y.resize(y_.size());
+  yp.resize(y_.size());
+  for (int i = 0; i < y_.size(); ++i) {
+    if (role_(i) == roleCode(Role::Algebraic)) {
+      y(i) = (1 - x) * yPrev_(i) + x * y_(i);
+      yp(i) = (1 - x) * ypPrev_(i) + x * yp_(i);
+      continue;
+    }
+    y(i) = h00 * yPrev_(i) + h * h10 * ypPrev_(i) + h01 * y_(i) + h * h11 * yp_(i);
+    yp(i) = (d00 * yPrev_(i) + d01 * y_(i)) / h + d10 * ypPrev_(i) + d11 * yp_(i);
+  }
+}
+
+}  // namespace openmss::solvers

@@ -1,0 +1,84 @@
+#pragma once
+// HHT and NEWMARK: the Newmark family for index-3 mechanical DAEs (docs/integrators.md, "HHT
+// and NEWMARK"), in the manner of Negrut, Rampalli, Ottarsson and Sajdak's HHT-I3: positions
+// follow Newmark's beta rule, velocities the gamma rule, the force balance is evaluated
+// (1 + alpha) at the new step and -alpha at the old one (HHT's alpha shift), and the
+// position constraints hold exactly at every step. The unknowns' roles (position, velocity,
+// multiplier) come from DaeProblem::role; a first-order state (DIFF) follows the gamma rule.
+// ALPHA = 0 with BETA, GAMMA free is NEWMARK. Step size from the position truncation error
+// (beta - 1/6) h^3 q''', steps landing on output times, modified Newton on the corrector.
+
+#include <Eigen/Dense>
+#include <limits>
+
+#include "solvers/dae_problem.hpp"
+#include "solvers/integrator.hpp"
+
+namespace openmss::solvers {
+
+struct HhtSettings {
+  double error = 1e-3;  // ERROR: local error tolerance on positions (relative and absolute)
+  double hinit = 0.0;   // HINIT (0: HMAX / 100)
+  double hmax = std::numeric_limits<double>::infinity();  // HMAX
+  double hmin = 0.0;          // HMIN: smallest step before the run fails (0: 1e-10 HMAX)
+  int maxit = 10;             // MAXIT: corrector iterations per attempt
+  double alpha = -0.3;        // ALPHA in [-1/3, 0]
+  double beta = 0.4225;       // (1 - alpha)^2 / 4 for HHT
+  double gamma = 0.8;         // (1 - 2 alpha) / 2 for HHT
+  bool patternGiven = false;  // PATTERN, as in BdfSettings
+  bool pattern[10] = {true, false, false, false, true, false, false, false, true, false};
+
+  // HHT's beta and gamma for a given alpha (second order, unconditionally stable).
+  static HhtSettings hht(double alpha) {
+    HhtSettings s;
+    s.alpha = alpha;
+    s.beta = (1.0 - alpha) * (1.0 - alpha) / 4.0;
+    s.gamma = (1.0 - 2.0 * alpha) / 2.0;
+    return s;
+  }
+};
+
+class HhtIntegrator final : public Integrator {
+ public:
+  HhtIntegrator(DaeProblem& problem, const HhtSettings& settings);
+
+  void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
+  bool step(double tout) override;
+
+  double t() const override { return t_; }
+  const Eigen::VectorXd& y() const override { return y_; }
+  const Eigen::VectorXd& yp() const override { return yp_; }
+  double previousTime() const override { return tPrevious_; }
+  // Cubic Hermite through the step's end values and derivatives (linear for multipliers).
+  void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
+  const IntegratorStatistics& statistics() const override { return stats_; }
+  const IntegratorFailure& failure() const override { return failure_; }
+
+ private:
+  bool attemptStep(double h, bool* newtonFailed, double* errorNorm);
+  void formNewtonMatrix(double tNew, double h);
+  double weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& ref, bool errorOnly) const;
+  void noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy);
+
+  DaeProblem& problem_;
+  HhtSettings settings_;
+  IntegratorStatistics stats_;
+  IntegratorFailure failure_;
+  Eigen::VectorXi role_;  // DaeProblem::Role of each unknown
+
+  double t_ = 0.0, tPrevious_ = 0.0, h_ = 0.0;
+  Eigen::VectorXd y_, yp_, acc_;  // acc_: q'' of positions (Newmark's acceleration)
+  Eigen::VectorXd yPrev_, ypPrev_;
+
+  Eigen::MatrixXd jac_, jacB_;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  Eigen::VectorXd rowScale_, colScale_, slope_;
+  double hJacobian_ = 0.0;
+  bool haveJacobian_ = false, jacobianCurrent_ = false;
+
+  Eigen::VectorXd yNew_, ypNew_, yPred_, ypPred_, g_, gOld_, dy_;
+  int lastWorstEq_ = -1, lastWorstVar_ = -1;
+  double lastWorstRes_ = 0.0, lastWorstChange_ = 0.0;
+};
+
+}  // namespace openmss::solvers

@@ -1,0 +1,328 @@
+#include "solvers/ida_integrator.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+
+#include <ida/ida.h>
+#include <nvector/nvector_serial.h>
+#include <sundials/sundials_context.h>
+#include <sundials/sundials_linearsolver.h>
+#include <sunmatrix/sunmatrix_dense.h>
+
+namespace openmss::solvers {
+
+// Absolute tolerance given to unknowns outside error control (velocities and multipliers of an
+// index-3 system): so large that their weight in IDA's norms vanishes. DASSL's users exclude
+// the index-2 and index-3 unknowns from the error test in the same way (Brenan, Campbell and
+// Petzold, ch. 5); IDASetSuppressAlg only covers the algebraic ones.
+constexpr double kUncontrolledTolerance = 1e20;
+
+struct IdaIntegrator::Engine {
+  DaeProblem* problem = nullptr;
+  SUNContext context = nullptr;
+  void* ida = nullptr;
+  N_Vector yy = nullptr, yp = nullptr, id = nullptr, atol = nullptr, work = nullptr;
+  N_Vector weights = nullptr, localErrors = nullptr;
+  SUNMatrix matrix = nullptr;
+  SUNLinearSolver linear = nullptr;
+  // Newton matrix at the last Jacobian call, and its balanced factorisation.
+  Eigen::MatrixXd jac;
+  double cj = 1.0;
+  Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  Eigen::VectorXd rowScale, colScale, yWork, ypWork, gWork, rhs;
+  long jacobianEvaluations = 0;
+  std::string lastMessage;
+
+  ~Engine() {
+    if (ida) IDAFree(&ida);
+    if (linear) SUNLinSolFree(linear);
+    if (matrix) SUNMatDestroy(matrix);
+    for (N_Vector v : {yy, yp, id, atol, work, weights, localErrors})
+      if (v) N_VDestroy(v);
+    if (context) SUNContext_Free(&context);
+  }
+
+  static Eigen::Map<Eigen::VectorXd> view(N_Vector v) {
+    return {N_VGetArrayPointer(v), static_cast<Eigen::Index>(N_VGetLength(v))};
+  }
+
+  static int residual(realtype t, N_Vector y, N_Vector yp, N_Vector r, void* user) {
+    auto* e = static_cast<Engine*>(user);
+    e->yWork = view(y);
+    e->ypWork = view(yp);
+    e->problem->residual(t, e->yWork, e->ypWork, e->gWork);
+    if (!e->gWork.allFinite()) return 1;  // recoverable: IDA retries with a smaller step
+    view(r) = e->gWork;
+    return 0;
+  }
+
+  static int jacobian(realtype t, realtype cj, N_Vector y, N_Vector yp, N_Vector, SUNMatrix,
+                      void* user, N_Vector, N_Vector, N_Vector) {
+    auto* e = static_cast<Engine*>(user);
+    e->yWork = view(y);
+    e->ypWork = view(yp);
+    e->problem->newtonMatrix(t, e->yWork, e->ypWork, cj, e->jac);
+    e->cj = cj;
+    ++e->jacobianEvaluations;
+    return e->jac.allFinite() ? 0 : 1;
+  }
+
+  // The linear solver: IDA's dense matrix is never filled; the Newton matrix from jacobian()
+  // is factored as R J C with R = diag(cj^rowScaleExponent), C = diag(cj^unknownScaleExponent)
+  // (DaeProblem), so that the constraint rows and multiplier columns of an index-3 system keep
+  // their pivots when cj = O(1/h) is large. Solutions are mapped back: x = C (R J C)^-1 R b.
+  static Engine* of(SUNLinearSolver s) { return static_cast<Engine*>(s->content); }
+  static SUNLinearSolver_Type type(SUNLinearSolver) { return SUNLINEARSOLVER_DIRECT; }
+  static SUNLinearSolver_ID identity(SUNLinearSolver) { return SUNLINEARSOLVER_CUSTOM; }
+  static int initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
+  static int setup(SUNLinearSolver s, SUNMatrix) {
+    Engine* e = of(s);
+    const Eigen::Index n = e->jac.rows();
+    e->rowScale.resize(n);
+    e->colScale.resize(n);
+    for (int i = 0; i < n; ++i) {
+      e->rowScale(i) = std::pow(e->cj, e->problem->rowScaleExponent(i));
+      e->colScale(i) = std::pow(e->cj, e->problem->unknownScaleExponent(i));
+    }
+    e->lu.compute(e->rowScale.asDiagonal() * e->jac * e->colScale.asDiagonal());
+    const Eigen::VectorXd pivots = e->lu.matrixLU().diagonal().cwiseAbs();
+    if (n > 0 && !(pivots.minCoeff() > 1e-14 * pivots.maxCoeff())) return SUNLS_LUFACT_FAIL;
+    return SUNLS_SUCCESS;
+  }
+  static int solve(SUNLinearSolver s, SUNMatrix, N_Vector x, N_Vector b, realtype) {
+    Engine* e = of(s);
+    e->rhs = e->rowScale.cwiseProduct(view(b));
+    auto out = view(x);
+    out = e->colScale.cwiseProduct(e->lu.solve(e->rhs));
+    return out.allFinite() ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
+  }
+  static sunindextype lastFlag(SUNLinearSolver) { return 0; }
+  static int release(SUNLinearSolver s) {
+    s->content = nullptr;  // the Engine owns itself
+    SUNLinSolFreeEmpty(s);
+    return SUNLS_SUCCESS;
+  }
+
+  // IDA's weighted norm, replaced by the largest weighted component (GSTIFF's norm, §9 of
+  // docs/theory.md). The root-mean-square IDA uses by default divides by the number of
+  // unknowns, so in a mechanism where most coordinates are at rest (the z, e1, e2 of a planar
+  // pendulum, every multiplier) one moving coordinate's error is diluted by sqrt(n / moving)
+  // and ERROR = 1e-3 lets the pendulum drift by 2.6e-3.
+  static realtype largestWeighted(N_Vector x, N_Vector w) {
+    const auto xs = view(x);
+    const auto ws = view(w);
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < xs.size(); ++i) {
+      const double v = std::abs(xs(i) * ws(i));
+      if (!(v <= worst)) worst = v;  // NaN propagates: it must fail the test
+    }
+    return worst;
+  }
+  static realtype largestWeightedMasked(N_Vector x, N_Vector w, N_Vector mask) {
+    const auto xs = view(x);
+    const auto ws = view(w);
+    const auto ms = view(mask);
+    double worst = 0.0;
+    for (Eigen::Index i = 0; i < xs.size(); ++i) {
+      if (ms(i) <= 0.0) continue;
+      const double v = std::abs(xs(i) * ws(i));
+      if (!(v <= worst)) worst = v;
+    }
+    return worst;
+  }
+
+  static void errorHandler(int, const char*, const char*, char* message, void* user) {
+    static_cast<Engine*>(user)->lastMessage = message;  // reported through failure()
+  }
+};
+
+IdaIntegrator::IdaIntegrator(DaeProblem& problem, const IdaSettings& settings)
+    : problem_(problem), settings_(settings) {}
+
+IdaIntegrator::~IdaIntegrator() = default;
+
+void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+  const int n = problem_.size();
+  engine_ = std::make_unique<Engine>();
+  Engine& e = *engine_;
+  e.problem = &problem_;
+  SUNContext_Create(nullptr, &e.context);
+  for (N_Vector* v : {&e.yy, &e.yp, &e.id, &e.atol, &e.work, &e.weights, &e.localErrors})
+    *v = N_VNew_Serial(n, e.context);
+  // Every vector IDA makes is cloned from these two and inherits the norm.
+  for (N_Vector v : {e.yy, e.yp, e.id, e.atol, e.work, e.weights, e.localErrors}) {
+    v->ops->nvwrmsnorm = &Engine::largestWeighted;
+    v->ops->nvwrmsnormmask = &Engine::largestWeightedMasked;
+  }
+  Engine::view(e.yy) = y0;
+  Engine::view(e.yp) = yp0;
+  auto id = Engine::view(e.id);
+  auto atol = Engine::view(e.atol);
+  for (int i = 0; i < n; ++i) {
+    id(i) = problem_.differential(i) ? 1.0 : 0.0;
+    atol(i) = problem_.errorControlled(i) ? settings_.error : kUncontrolledTolerance;
+  }
+  e.ida = IDACreate(e.context);
+  IDASetErrHandlerFn(e.ida, &Engine::errorHandler, &e);
+  IDAInit(e.ida, &Engine::residual, t0, e.yy, e.yp);
+  IDASetUserData(e.ida, &e);
+  // ERROR is both relative and absolute, as GSTIFF's ERROR (1 + |y|) weighting.
+  IDASVtolerances(e.ida, settings_.error, e.atol);
+  IDASetId(e.ida, e.id);
+  IDASetSuppressAlg(e.ida, SUNTRUE);
+
+  e.matrix = SUNDenseMatrix(n, n, e.context);
+  e.linear = SUNLinSolNewEmpty(e.context);
+  e.linear->content = &e;
+  e.linear->ops->gettype = &Engine::type;
+  e.linear->ops->getid = &Engine::identity;
+  e.linear->ops->initialize = &Engine::initialize;
+  e.linear->ops->setup = &Engine::setup;
+  e.linear->ops->solve = &Engine::solve;
+  e.linear->ops->lastflag = &Engine::lastFlag;
+  e.linear->ops->free = &Engine::release;
+  IDASetLinearSolver(e.ida, e.linear, e.matrix);
+  IDASetJacFn(e.ida, &Engine::jacobian);
+
+  IDASetMaxOrd(e.ida, std::clamp(settings_.kmax, 1, 5));
+  if (std::isfinite(settings_.hmax) && settings_.hmax > 0) IDASetMaxStep(e.ida, settings_.hmax);
+  // HMIN as GSTIFF's default: without a floor, a residual that cannot be evaluated past some
+  // time makes IDA creep towards that time with ever smaller steps instead of failing.
+  IDASetMinStep(e.ida, settings_.hmin > 0 ? settings_.hmin
+                                          : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3)));
+  if (settings_.hinit > 0) IDASetInitStep(e.ida, settings_.hinit);
+  IDASetMaxNonlinIters(e.ida, std::max(1, settings_.maxit));
+
+  t_ = tPrevious_ = t0;
+  y_ = y0;
+  yp_ = yp0;
+  stats_ = {};
+  failure_ = {};
+  outcome_ = IdaOutcome::Ok;
+}
+
+bool IdaIntegrator::step(double tout) {
+  Engine& e = *engine_;
+  const double eps = 1e-12 * std::max(1.0, std::abs(tout));
+  if (t_ >= tout - eps) return true;
+  IDASetStopTime(e.ida, tout);
+  double tReturned = t_;
+  const int flag = IDASolve(e.ida, tout, &tReturned, e.yy, e.yp, IDA_ONE_STEP);
+  if (flag < 0) {
+    recordFailure(flag);
+    readStatistics();
+    return false;
+  }
+  double tCurrent = tReturned, hLast = 0.0;
+  IDAGetCurrentTime(e.ida, &tCurrent);
+  IDAGetLastStep(e.ida, &hLast);
+  tPrevious_ = tCurrent - hLast;
+  t_ = std::abs(tReturned - tout) <= eps ? tout : tReturned;
+  y_ = Engine::view(e.yy);
+  yp_ = Engine::view(e.yp);
+  readStatistics();
+  if (observingSteps()) {
+    IDAGetErrWeights(e.ida, e.weights);
+    IDAGetEstLocalErrors(e.ida, e.localErrors);
+    notifyStep({StepInfo::Event::Accepted, stats_.steps, stats_.order, tPrevious_, hLast,
+                N_VWrmsNorm(e.localErrors, e.weights)});
+  }
+  return true;
+}
+
+void IdaIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const {
+  Engine& e = *engine_;
+  if (s == t_) {
+    y = y_;
+    yp = yp_;
+    return;
+  }
+  IDAGetDky(e.ida, s, 0, e.work);
+  y = Engine::view(e.work);
+  IDAGetDky(e.ida, s, 1, e.work);
+  yp = Engine::view(e.work);
+}
+
+void IdaIntegrator::readStatistics() {
+  Engine& e = *engine_;
+  long value = 0;
+  IDAGetNumSteps(e.ida, &value);
+  stats_.steps = value;
+  IDAGetNumErrTestFails(e.ida, &value);
+  stats_.rejectedSteps = value;
+  IDAGetNumNonlinSolvConvFails(e.ida, &value);
+  stats_.newtonFailures = value;
+  IDAGetNumResEvals(e.ida, &value);
+  stats_.residualEvaluations = value;
+  stats_.jacobianEvaluations = e.jacobianEvaluations;
+  int order = 1;
+  IDAGetLastOrder(e.ida, &order);
+  stats_.order = order;
+  double h = 0.0;
+  IDAGetLastStep(e.ida, &h);
+  stats_.stepSize = h;
+}
+
+void IdaIntegrator::recordFailure(int flag) {
+  Engine& e = *engine_;
+  switch (flag) {
+    case IDA_TOO_MUCH_WORK: outcome_ = IdaOutcome::TooMuchWork; break;
+    case IDA_TOO_MUCH_ACC: outcome_ = IdaOutcome::TooMuchAccuracy; break;
+    case IDA_ERR_FAIL: outcome_ = IdaOutcome::ErrorTestFailures; break;
+    case IDA_CONV_FAIL: outcome_ = IdaOutcome::ConvergenceFailures; break;
+    case IDA_LSETUP_FAIL:
+    case IDA_LSOLVE_FAIL: outcome_ = IdaOutcome::LinearSolverFailed; break;
+    case IDA_RES_FAIL:
+    case IDA_REP_RES_ERR:
+    case IDA_FIRST_RES_FAIL: outcome_ = IdaOutcome::ResidualFailed; break;
+    case IDA_CONSTR_FAIL: outcome_ = IdaOutcome::ConstraintFailures; break;
+    default: outcome_ = IdaOutcome::OtherFailure; break;
+  }
+  static const char* const kReasons[] = {
+      "",
+      "too many steps without reaching the output time",
+      "the requested accuracy cannot be reached in floating point",
+      "the local error stays above the tolerance (repeated error-test failures)",
+      "the corrector did not converge (repeated Newton failures)",
+      "the Newton matrix is singular",
+      "the equations could not be evaluated (a non-finite value)",
+      "the constraints on the unknowns were violated",
+      "the integrator failed",
+  };
+  double tCurrent = t_, h = 0.0;
+  IDAGetCurrentTime(e.ida, &tCurrent);
+  IDAGetCurrentStep(e.ida, &h);
+  failure_ = {};
+  failure_.time = tCurrent;
+  failure_.stepSize = h;
+  failure_.reason = kReasons[static_cast<int>(outcome_)];
+  // The worst equation: the residual of the step IDA could not take, predicted by a forward
+  // Euler step from the last accepted state (at the accepted state itself every residual is
+  // converged away and says nothing about the cause).
+  const Eigen::VectorXd yPredicted = y_ + h * yp_;
+  problem_.residual(t_ + h, yPredicted, yp_, e.gWork);
+  for (int i = 0; i < e.gWork.size(); ++i) {
+    const double r = std::abs(e.gWork(i));
+    if (failure_.worstEquation < 0 || !std::isfinite(r) || r > failure_.worstResidual) {
+      failure_.worstEquation = i;
+      failure_.worstResidual = r;
+      if (!std::isfinite(r)) break;
+    }
+  }
+  // The worst variable: the largest weighted local-error estimate of the last attempt.
+  if (IDAGetEstLocalErrors(e.ida, e.localErrors) == IDA_SUCCESS &&
+      IDAGetErrWeights(e.ida, e.weights) == IDA_SUCCESS) {
+    const auto ele = Engine::view(e.localErrors);
+    const auto w = Engine::view(e.weights);
+    for (int i = 0; i < ele.size(); ++i) {
+      const double c = std::abs(ele(i) * w(i));
+      if (problem_.differential(i) && (failure_.worstVariable < 0 || c > failure_.worstChange)) {
+        failure_.worstVariable = i;
+        failure_.worstChange = std::abs(ele(i));
+      }
+    }
+  }
+}
+
+}  // namespace openmss::solvers
