@@ -236,8 +236,10 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       // the steps' errors accumulate (the DAE-test-set pendulum: 19 steps at ERROR = 1e-3 end
       // 2.2e-3 (WSTIFF) and 3.5e-3 (GSTIFF) off). Holding each step to a tenth of ERROR keeps
       // the global error within ERROR there (docs/integrators.md, "ERROR"). HMAX-limited runs
-      // (the validation cases) take the same steps either way.
-      s.error = p.type == IntegratorType::Dstiff ? p.error : p.error * kBdfLocalShare;
+      // (the validation cases) take the same steps either way. DSTIFF gets the same share:
+      // with ERROR itself, IDA's error on the 5 s spherical validation case grew to a flipped
+      // pendulum (docs/integrators.md, measured table).
+      s.error = p.error * kBdfLocalShare;
       s.hinit = p.hinit;
       s.hmax = p.hmax;
       s.hmin = p.hmin;
