@@ -16,11 +16,17 @@
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/random_state.hpp"
 
 namespace openmss::mechanics {
 namespace {
 
 using L = StateLayout;
+using testing::turned;
+Eigen::VectorXd randomState(const MultibodySystem& s, std::mt19937& rng) {
+  return testing::randomState(s, rng, testing::RandomMu::Yes);
+}
+
 
 struct Case {
   const char* name;
@@ -62,34 +68,6 @@ model::Model build(const std::string& text) {
   EXPECT_TRUE(model::buildModel(ds, m, d)) << text;
   for (const auto& x : d.all()) ADD_FAILURE() << format(x);
   return m;
-}
-
-Eigen::VectorXd randomState(const MultibodySystem& s, std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd y = s.initialState();
-  for (int b = 0; b < s.layout().bodies; ++b) {
-    const int o = s.layout().body(b);
-    for (int c = 0; c < 3; ++c) y(o + L::kR + c) += 0.1 * u(rng);
-    Eigen::Vector4d e = y.segment<4>(o + L::kE);
-    for (int c = 0; c < 4; ++c) e(c) += 0.2 * u(rng);
-    y.segment<4>(o + L::kE) = e.normalized();
-    for (int c = 0; c < 3; ++c) {
-      y(o + L::kV + c) = u(rng);
-      y(o + L::kW + c) = u(rng);
-    }
-    y(o + L::kMu) = 0.01 * u(rng);
-  }
-  for (int k = 0; k < s.layout().constraintEquations; ++k) y(s.layout().lambda(k)) = 10.0 * u(rng);
-  return y;
-}
-
-Eigen::VectorXd turned(const Eigen::VectorXd& y, int o, const Eigen::Vector3d& axis, double angle) {
-  Eigen::VectorXd z = y;
-  const Eigen::Vector4d e = z.segment<4>(o + L::kE);
-  const Eigen::Quaterniond q(e(0), e(1), e(2), e(3));
-  const Eigen::Quaterniond qr = q * Eigen::Quaterniond(Eigen::AngleAxisd(angle, axis));
-  z.segment<4>(o + L::kE) << qr.w(), qr.x(), qr.y(), qr.z();
-  return z;
 }
 
 class JointEquations : public ::testing::TestWithParam<Case> {};

@@ -11,11 +11,16 @@
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/random_state.hpp"
 
 namespace openmss::mechanics {
 namespace {
 
 using L = StateLayout;
+Eigen::VectorXd randomState(const MultibodySystem& s, std::mt19937& rng) {
+  return testing::randomState(s, rng, testing::RandomMu::Yes);
+}
+
 
 // The bundled piston compressor: revolute, spherical, universal and translational joints, a
 // motion and two SFORCEs whose functions read DM and VR.
@@ -30,26 +35,6 @@ model::Model pistonModel() {
 }
 
 // A state away from any special configuration: the data set's pose perturbed, random
-// velocities, multipliers and normalisation multipliers.
-Eigen::VectorXd randomState(const MultibodySystem& s, std::mt19937& rng) {
-  std::uniform_real_distribution<double> u(-1.0, 1.0);
-  Eigen::VectorXd y = s.initialState();
-  for (int b = 0; b < s.layout().bodies; ++b) {
-    const int o = s.layout().body(b);
-    for (int c = 0; c < 3; ++c) y(o + L::kR + c) += 0.1 * u(rng);
-    Eigen::Vector4d e = y.segment<4>(o + L::kE);
-    for (int c = 0; c < 4; ++c) e(c) += 0.2 * u(rng);
-    y.segment<4>(o + L::kE) = e.normalized();
-    for (int c = 0; c < 3; ++c) {
-      y(o + L::kV + c) = u(rng);
-      y(o + L::kW + c) = u(rng);
-    }
-    y(o + L::kMu) = 0.01 * u(rng);
-  }
-  for (int k = 0; k < s.layout().constraintEquations; ++k) y(s.layout().lambda(k)) = 10.0 * u(rng);
-  return y;
-}
-
 TEST(MultibodySystem, NewtonMatrixMatchesCentralDifferences) {
   const model::Model m = pistonModel();
   const MultibodySystem s(m);
