@@ -3,6 +3,8 @@
 // residual and change named by their elements, to the .msg only; without EPRINT none of it.
 
 #include <gtest/gtest.h>
+
+#include "support/cli_run.hpp"
 #include <sys/wait.h>
 
 #include <chrono>
@@ -17,28 +19,13 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::path scratch(const std::string& name) {
-  const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
-  fs::path p = fs::temp_directory_path() / ("openmss-eprint-" + name + "-" + std::to_string(ticks));
-  fs::create_directories(p);
-  return p;
-}
+using openmss::testing::scratch;
+using openmss::testing::slurp;
+using openmss::testing::write;
 
 int run(const std::string& args, const fs::path& dir) {
-  const std::string cmd =
-      "cd '" + dir.string() + "' && '" OPENMSS_BINARY "' " + args + " > cli.log 2>&1";
-  const int raw = std::system(cmd.c_str());
-  return WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  return openmss::testing::run(args, dir).status;
 }
-
-std::string slurp(const fs::path& p) {
-  std::ifstream in(p, std::ios::binary);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  return ss.str();
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
 
 // A pendulum on a revolute joint (PART/2, JOINT/1) under gravity.
 std::string pendulum(const std::string& debug) {

@@ -7,6 +7,8 @@
 // outputs up to the last good step on disk.
 
 #include <gtest/gtest.h>
+
+#include "support/cli_run.hpp"
 #include <sys/wait.h>
 
 #include <chrono>
@@ -84,33 +86,10 @@ TEST(RedundantHinge, SecondHingeIsRemovedAndCarriesNothing) {
   for (int k : red.removed) EXPECT_EQ(y(s.layout().lambda(k)), 0.0);
 }
 
-struct Result {
-  int status = -1;
-  std::string output;
-};
-
-fs::path scratch(const std::string& name) {
-  const auto ticks = std::chrono::steady_clock::now().time_since_epoch().count();
-  fs::path p = fs::temp_directory_path() / ("openmss-red-" + name + "-" + std::to_string(ticks));
-  fs::create_directories(p);
-  return p;
-}
-
-Result run(const std::string& args, const fs::path& dir) {
-  const fs::path log = dir / "cli.log";
-  const std::string cmd = "cd '" + dir.string() + "' && '" OPENMSS_BINARY "' " + args + " > '" +
-                          log.string() + "' 2>&1";
-  const int raw = std::system(cmd.c_str());
-  Result r;
-  r.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  std::ifstream in(log);
-  std::stringstream ss;
-  ss << in.rdbuf();
-  r.output = ss.str();
-  return r;
-}
-
-void write(const fs::path& p, const std::string& text) { std::ofstream(p) << text; }
+using openmss::testing::Result;
+using openmss::testing::run;
+using openmss::testing::scratch;
+using openmss::testing::write;
 
 TEST(RedundantHinge, CheckReportsTheRemovedEquations) {
   const fs::path dir = scratch("check");

@@ -16,6 +16,7 @@
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/constraint_derivative_check.hpp"
 #include "support/random_state.hpp"
 
 namespace openmss::mechanics {
@@ -40,59 +41,15 @@ model::Model build(const std::string& text) {
 // Rows, Newton matrix and rates of every equation against central differences.
 void checkDerivatives(const MultibodySystem& s, const model::Model& m) {
   std::mt19937 rng(3);
-  const int nb = s.layout().bodies;
-  for (int trial = 0; trial < 3; ++trial) {
-    const Eigen::VectorXd y = randomState(s, rng);
-    std::vector<double> row(6 * nb);
-    for (int k = 0; k < s.constraints().size(); ++k) {
-      s.constraintRow(k, y.data(), row.data());
-      for (int b = 0; b < nb; ++b)
-        for (int dir = 0; dir < 6; ++dir) {
-          const int o = s.layout().body(b);
-          auto displaced = [&](double h) {
-            Eigen::VectorXd z = y;
-            if (dir < 3) z(o + L::kR + dir) += h;
-            else z = turned(y, o, Eigen::Vector3d::Unit(dir - 3), h);
-            return s.constraintValue(k, 0.3, z.data());
-          };
-          const double h = 1e-6;
-          const double fd = (displaced(h) - displaced(-h)) / (2 * h);
-          // h = 1e-6 on O(1) quantities: truncation and round-off ~1e-10.
-          EXPECT_NEAR(row[6 * b + dir], fd, 1e-7 * (1.0 + std::abs(fd)))
-              << s.constraints().describe(k, m) << " body " << b << " direction " << dir;
-        }
-    }
-  }
+  for (int trial = 0; trial < 3; ++trial)
+    testing::checkConstraintRows(s, m, randomState(s, rng), 0.3);
   // Newton matrix against differences of the residual.
   const int n = s.layout().size();
   const Eigen::VectorXd y = randomState(s, rng);
   const Eigen::VectorXd yp = Eigen::VectorXd::Random(n);
   testing::checkNewtonMatrix(s, 0.2, y, yp, 21.0, "coupling");
   // Rates along the motion (every body moving with its velocity).
-  auto moved = [&](double h) {
-    Eigen::VectorXd z = y;
-    for (int b = 0; b < nb; ++b) {
-      const int o = s.layout().body(b);
-      z.segment<3>(o + L::kR) += h * y.segment<3>(o + L::kV);
-      const Eigen::Vector3d w = y.segment<3>(o + L::kW);
-      z = turned(z, o, w / w.norm(), h * w.norm());
-    }
-    return z;
-  };
-  for (int k = 0; k < s.constraints().size(); ++k) {
-    if (s.constraints().equations()[k].motion >= 0) continue;
-    double first = 0, second = 0;
-    s.constraintRates(k, y.data(), &first, &second);
-    const double h = 1e-4;
-    const double p = s.constraintValue(k, 0.0, moved(h).data());
-    const double z = s.constraintValue(k, 0.0, y.data());
-    const double q = s.constraintValue(k, 0.0, moved(-h).data());
-    EXPECT_NEAR(first, (p - q) / (2 * h), 1e-7 * (1.0 + std::abs(first)))
-        << s.constraints().describe(k, m);
-    // Second differences: truncation ~h^2, round-off ~1e-16/h^2, both 1e-8.
-    EXPECT_NEAR(second, (p - 2 * z + q) / (h * h), 1e-5 * (1.0 + std::abs(second)))
-        << s.constraints().describe(k, m);
-  }
+  testing::checkConstraintRates(s, m, y, 0.0, testing::MotionRates::Skip);
 }
 
 // Kinematic march: predict, assemble, velocities, accelerations at each time.

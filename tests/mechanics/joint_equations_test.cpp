@@ -16,6 +16,7 @@
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/constraint_derivative_check.hpp"
 #include "support/random_state.hpp"
 
 namespace openmss::mechanics {
@@ -89,30 +90,8 @@ TEST_P(JointEquations, RowsAreVirtualDisplacementDerivatives) {
   const model::Model m = build(dataSet(GetParam()));
   const MultibodySystem s(m);
   std::mt19937 rng(11);
-  for (int trial = 0; trial < 3; ++trial) {
-    const Eigen::VectorXd y = randomState(s, rng);
-    std::vector<double> row(6);
-    for (int k = 0; k < s.constraints().size(); ++k) {
-      s.constraintRow(k, y.data(), row.data());
-      for (int dir = 0; dir < 6; ++dir) {
-        auto displaced = [&](double h) {
-          Eigen::VectorXd z = y;
-          if (dir < 3) {
-            z(L::kR + dir) += h;
-          } else {
-            z = turned(y, 0, Eigen::Vector3d::Unit(dir - 3), h);
-          }
-          return s.constraintValue(k, 0.3, z.data());
-        };
-        const double h = 1e-6;
-        const double fd = (displaced(h) - displaced(-h)) / (2 * h);
-        // Central differences with h = 1e-6 on O(1) quantities: error ~1e-10 (truncation h^2
-        // and round-off 1e-16/h); 1e-7 leaves margin.
-        EXPECT_NEAR(row[dir], fd, 1e-7 * (1.0 + std::abs(fd)))
-            << s.constraints().describe(k, m) << " direction " << dir;
-      }
-    }
-  }
+  for (int trial = 0; trial < 3; ++trial)
+    testing::checkConstraintRows(s, m, randomState(s, rng), 0.3);
 }
 
 TEST_P(JointEquations, NewtonMatrixMatchesCentralDifferences) {
@@ -130,24 +109,8 @@ TEST_P(JointEquations, RatesMatchDifferencesAlongTheMotion) {
   const MultibodySystem s(m);
   std::mt19937 rng(5);
   const Eigen::VectorXd y = randomState(s, rng);
-  auto moved = [&](double h) {
-    Eigen::VectorXd z = y;
-    z.segment<3>(L::kR) += h * y.segment<3>(L::kV);
-    const Eigen::Vector3d w = y.segment<3>(L::kW);
-    return turned(z, 0, w / w.norm(), h * w.norm());
-  };
-  for (int k = 0; k < s.constraints().size(); ++k) {
-    double first = 0, second = 0;
-    s.constraintRates(k, y.data(), &first, &second);
-    const double h = 1e-4;
-    // Time is held fixed: the differences see the geometry only, as the rates do.
-    const double p = s.constraintValue(k, 0.5, moved(h).data());
-    const double z = s.constraintValue(k, 0.5, y.data());
-    const double mns = s.constraintValue(k, 0.5, moved(-h).data());
-    EXPECT_NEAR(first, (p - mns) / (2 * h), 1e-7 * (1.0 + std::abs(first))) << k;
-    // Second differences: truncation ~h^2 = 1e-8, round-off ~1e-16/h^2 = 1e-8.
-    EXPECT_NEAR(second, (p - 2 * z + mns) / (h * h), 1e-5 * (1.0 + std::abs(second))) << k;
-  }
+  // Time is held fixed: the differences see the geometry only, as the rates do.
+  testing::checkConstraintRates(s, m, y, 0.5);
 }
 
 const Case kCases[] = {
