@@ -1,6 +1,7 @@
 // Scaling of the dynamics core on planar revolute pendulum chains of N links
 // (bench/model_generators.hpp): one residual, one sparse Newton matrix (structural pattern,
-// compressed forward AD, with its run-time pattern check), one KLU factorisation and solve, and
+// element-local assembly, with its run-time pattern check; and by compressed forward AD of the
+// whole residual), one KLU factorisation and solve, and
 // the BDF step loop; the dense matrix and LU beside them for small N, which is where the
 // integrator's sparse threshold (BdfIntegrator::kSparseThreshold) comes from. Figures only;
 // nothing is asserted. Run: build/bench/jacobian_bench (OPENMSS_BUILD_BENCH=ON).
@@ -87,6 +88,22 @@ void BM_SparseNewtonMatrix(benchmark::State& state) {
 }
 BENCHMARK(BM_SparseNewtonMatrix)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Arg(100)->Arg(1000)
     ->Unit(benchmark::kMicrosecond);
+
+// The same matrix by compressed forward AD of the whole residual (one dual pass per colour),
+// the path before the element-local assembly and still the fallback for dense rows; no guard.
+void BM_ColouredNewtonMatrix(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  const mechanics::JacobianPattern& pattern = c.dae->jacobianPattern();
+  Eigen::SparseMatrix<double> jac = pattern.matrix();
+  mechanics::SparseJacobianWork work;
+  work.elementLocal = false;
+  for (auto _ : state) {
+    c.system->newtonMatrixSparse(0.0, c.y, c.yp, c.cj, pattern, jac, work);
+    benchmark::DoNotOptimize(jac.valuePtr());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_ColouredNewtonMatrix)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 void BM_DenseNewtonMatrix(benchmark::State& state) {
   Chain& c = chain(static_cast<int>(state.range(0)));

@@ -5,6 +5,7 @@
 
 #include "analysis/statics.hpp"
 #include "common/dual.hpp"
+#include "mechanics/coupled_accelerations.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/pose.hpp"
 
@@ -198,6 +199,12 @@ bool linearize(const mechanics::MultibodySystem& system, double t, const Eigen::
   out.mass = e.block(n, n, n, n);
   out.damping = f.block(n, n, n, n);
   out.stiffness = f.block(n, 0, n, n);
+  // A force function reading a reaction depends on the multipliers, whose perturbation the
+  // projection removes (docs/theory.md §4b).
+  if (mechanics::forceFunctionsReadReactions(system.model()))
+    return refuse(
+        "a force function reads a constraint reaction force; linearising it is not supported "
+        "yet");
   // User equations that read reaction forces would need the multipliers' perturbation, which
   // the projection removes from the balance rows only.
   if (nd + na > 0) {

@@ -29,10 +29,18 @@ std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, in
                std::to_string(k - e.firstState + 1) + " of " +
                (e.kind == model::LinearStateElement::Kind::Lse ? "LSE/" : "TFSISO/") +
                std::to_string(e.id);
+    for (const auto& e : m.generalStates)
+      if (k >= e.firstState && k < e.firstState + e.ns)
+        return std::string(equation ? "state equation " : "state ") +
+               std::to_string(k - e.firstState + 1) + " of GSE/" + std::to_string(e.id);
     return "user state";
   }
   const int k = i - l.userAlg(0);
   if (k < nv) return "VARIABLE/" + std::to_string(m.variables[k].id) + (equation ? " function" : "");
+  for (const auto& e : m.generalStates)  // GSE outputs, after the DIFF derivatives
+    if (k >= e.firstOutput && k < e.firstOutput + e.no)
+      return std::string(equation ? "output equation " : "output ") +
+             std::to_string(k - e.firstOutput + 1) + " of GSE/" + std::to_string(e.id);
   return std::string(equation ? "FUNCTION of DIFF/" : "DIF1 of DIFF/") +
          std::to_string(m.diffs[k - nv].id);
 }

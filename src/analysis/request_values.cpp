@@ -59,16 +59,46 @@ std::optional<mechanics::ForceElementRef> forceElementOf(model::MeasureKind kind
   }
 }
 
+// What force functions read besides y: accelerations (y') and reactions (the multipliers in y),
+// so that a read-back of a force whose function reads them gives the force the DAE applied.
+mechanics::DynamicReads<double> readsOf(const mechanics::MultibodySystem& s,
+                                        const Eigen::VectorXd& yp) {
+  return {yp.data(), &s.constraints()};
+}
+
+// Sum of the force elements acting on `marker` (as I, or as J / JFLOAT), only those between
+// `marker` and `other` when other >= 0: force on the marker's part, torque about its origin.
+void forceElementsOnMarker(const mechanics::MultibodySystem& s, int marker, int other, double t,
+                           const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                           Eigen::Vector3d& force, Eigen::Vector3d& torque) {
+  force.setZero();
+  torque.setZero();
+  const mechanics::ForceElements& fe = s.forceElements();
+  const mechanics::DynamicReads<double> reads = readsOf(s, yp);
+  Eigen::Vector3d f, tq;
+  for (const mechanics::ForceElementRef& e : fe.elements()) {
+    const int i = fe.iMarker(e), j = fe.jMarker(e);
+    const bool atI = i == marker && (other < 0 || j == other);
+    const bool atJ = j == marker && (other < 0 || i == other);
+    if (!atI && !atJ) continue;
+    fe.action(e, !atI, t, y.data(), f, tq, &reads);
+    force += f;
+    torque += tq;
+  }
+}
+
 // Force and torque (about the marker origin, ground axes) on `marker` from element forces.
 void elementForce(const mechanics::MultibodySystem& s, model::MeasureKind kind, int element,
-                  bool atJ, double t, const Eigen::VectorXd& y, Eigen::Vector3d& f,
-                  Eigen::Vector3d& tq) {
+                  bool atJ, double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                  Eigen::Vector3d& f, Eigen::Vector3d& tq) {
+  const mechanics::DynamicReads<double> reads = readsOf(s, yp);
   if (kind == model::MeasureKind::SForceForce) {
-    s.sforceAction(element, atJ, t, y.data(), f, tq);
+    s.forceElements().action({mechanics::ForceElementKind::SForce, element}, atJ, t, y.data(), f,
+                             tq, &reads);
     return;
   }
   if (auto e = forceElementOf(kind, element)) {
-    s.forceElements().action(*e, atJ, t, y.data(), f, tq);
+    s.forceElements().action(*e, atJ, t, y.data(), f, tq, &reads);
     return;
   }
   using CE = mechanics::MultibodySystem::ConstraintElement;
@@ -117,7 +147,7 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
     case K::SpringDamperForce: case K::BushingForce: case K::FieldForce: case K::BeamForce:
     case K::VForceForce: case K::VTorqueForce: case K::GForceForce: {
       Eigen::Vector3d f, tq;
-      elementForce(s, ms.kind, ms.element, ms.atJ == 1, t, y, f, tq);
+      elementForce(s, ms.kind, ms.element, ms.atJ == 1, t, y, yp, f, tq);
       return component(f, tq, ms.component, k);
     }
     case K::NetForce: {
@@ -150,7 +180,7 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
         }
       }
       // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...).
-      s.forceElementsOnMarker(ms.i, ms.j, t, y.data(), f, tq);
+      forceElementsOnMarker(s, ms.i, ms.j, t, y, yp, f, tq);
       ft += f;
       tt += tq;
       return component(ft, tt, ms.component, k);
@@ -234,7 +264,7 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
       }
       // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...) between I and J.
       if (r.jMarker >= 0) {
-        s.forceElementsOnMarker(r.iMarker, r.jMarker, t, y.data(), f, tq);
+        forceElementsOnMarker(s, r.iMarker, r.jMarker, t, y, yp, f, tq);
         ft += f; tt += tq;
       }
       put(ft, tt, true);

@@ -10,6 +10,7 @@
 #include "analysis/multibody_dae.hpp"
 #include "analysis/request_values.hpp"
 #include "analysis/sensor_monitor.hpp"
+#include "analysis/discrete_sampler.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/loop_count.hpp"
@@ -147,7 +148,8 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   if (m.userDifferentialCount() + m.userAlgebraicCount() > 0)  // docs/theory.md §4a
     msg_.line("   User equations:       " + std::to_string(m.variables.size()) + " VARIABLE, " +
               std::to_string(m.diffs.size()) + " DIFF, " + std::to_string(m.linearStates.size()) +
-              " LSE/TFSISO; " + std::to_string(m.userDifferentialCount()) +
+              " LSE/TFSISO, " + std::to_string(m.generalStates.size()) + " GSE; " +
+              std::to_string(m.userDifferentialCount()) +
               " user states integrated");
   msg_.line("   Requests:             " + std::to_string(m.requests.size()));
   msg_.line("   Constraint equations: " + std::to_string(system_->constraints().size()));
@@ -381,7 +383,8 @@ bool Session::simulate(const language::Statement& c) {
   const double t0 = t_, outStep = (*end - t0) / static_cast<double>(nOut);
 
   // DIFF, LSE and TFSISO states must be integrated: a 0-DOF model with them runs dynamics.
-  const bool userStates = system_->layout().userDifferential > 0;
+  const bool userStates =
+      system_->layout().userDifferential > 0 || DiscreteSampler(*system_).active();
   // SENSORs are monitored on the integrator's steps: a 0-DOF model with them runs dynamics.
   const bool kinematic = kin || (trans && dof_ == 0 && !userStates && m.sensors.empty());
   if (kin && !m.sensors.empty()) {
@@ -506,9 +509,14 @@ bool Session::simulate(const language::Statement& c) {
     sensors.start(t_, y_, yp_);
     OutputGrid grid{t0, outStep, *end, 0, nOut};
     const long logEvery = std::max(1L, nOut / 10);
+    // GSE discrete states (analysis/discrete_sampler.hpp): the integrator stops at each sample.
+    const DiscreteSampler sampler(*system_);
     for (long i = 1; i <= grid.count; ++i) {
       const double t = grid.time(i);
-      const bool ok = sensors.advanceTo(bdf, t);
+      const double sampleTime = sampler.active() ? sampler.nextTime() : t + 1.0;
+      const bool sampleFirst = sampleTime <= t + 1e-12 * std::max(1.0, std::abs(t));
+      const double target = sampleFirst ? std::min(t, sampleTime) : t;
+      const bool ok = sensors.advanceTo(bdf, target);
       const auto& st = bdf.statistics();
       // HSIZE, ORDER, NJAC, NRHS read by REQUEST functions: the numbers the .msg prints.
       m.analysisStatus.stepSize = st.stepSize;
@@ -562,6 +570,15 @@ bool Session::simulate(const language::Statement& c) {
         if (ev->outputInterval) grid.reschedule(i, ev->time, *ev->outputInterval);
         --i;  // output i is still ahead
         continue;
+      }
+      if (sampleFirst) {  // new discrete states, then a restart from the consistent state
+        Eigen::VectorXd ys = bdf.y(), yps = bdf.yp();
+        sampler.sample(bdf.t(), ys, yps);
+        bdf.start(bdf.t(), ys, yps);
+        if (target < t) {
+          --i;  // output i is still ahead
+          continue;
+        }
       }
       t_ = t;
       y_ = bdf.y();

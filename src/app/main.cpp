@@ -21,6 +21,7 @@
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/loop_count.hpp"
 #include "model/model_builder.hpp"
+#include "user/user_library.hpp"
 
 namespace fs = std::filesystem;
 using namespace openmss;
@@ -36,7 +37,7 @@ constexpr const char* kMainHelp =
     "  openmss run FILE.acf [--outdir DIR]          run an ADAMS command file\n"
     "  openmss run FILE.adm [--end T] [--steps N | --dtout H] [--outdir DIR]\n"
     "                                               run a model with a transient simulation\n"
-    "  openmss check FILE.adm                       read and check a model, print its DOF\n"
+    "  openmss check FILE.adm [--user-library LIB]  read and check a model, print its DOF\n"
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
     "  openmss COMMAND --help                       help on one command\n"
     "\n"
@@ -51,10 +52,12 @@ constexpr const char* kRunHelp =
     "  Runs a model with SIMULATE/TRANSIENT, END=T (default 1), and STEPS=N (default 100) or\n"
     "  DTOUT=H; writes the request file when the model asks for it (OUTPUT/REQSAVE).\n"
     "Outputs go to the current directory or to --outdir: <prefix>.msg, <prefix>.req.\n"
-    "A progress line (simulated time, steps, ETA) is shown on a terminal.\n";
+    "A progress line (simulated time, steps, ETA) is shown on a terminal.\n"
+    "--user-library LIB names the default library of user-written subroutines (ADAMS's\n"
+    "  run-user mode): GSEs without ROUTINE=lib:: or INTERFACE= take their routines from it.\n";
 
 constexpr const char* kCheckHelp =
-    "openmss check FILE.adm\n"
+    "openmss check FILE.adm [--user-library LIB]\n"
     "  Reads and checks a data set without simulating. Prints every diagnostic\n"
     "  (file:line: severity: STATEMENT/id: message. what to change), the Gruebler count and\n"
     "  the degrees of freedom from the rank of the constraint Jacobian.\n"
@@ -229,6 +232,7 @@ int main(int argc, char** argv) {
       else if (a == "--steps") steps = std::atol(next());
       else if (a == "--dtout") dtout = std::atof(next());
       else if (a == "--quiet") quiet = true;
+      else if (a == "--user-library") user::setDefaultLibrary(fs::absolute(next()).string());
       else if (a == "--summary") {}
       else if (file.empty()) file = a;
       else { std::fprintf(stderr, "openmss run: unexpected argument %s\n", a.c_str()); return 64; }
@@ -244,7 +248,9 @@ int main(int argc, char** argv) {
   }
   if (cmd == "check") {
     if (wantsHelp(argc, argv)) { std::printf("%s", kCheckHelp); return 0; }
-    if (argc != 3) { std::fprintf(stderr, "%s", kCheckHelp); return 64; }
+    if (argc == 5 && std::string(argv[3]) == "--user-library")
+      user::setDefaultLibrary(fs::absolute(argv[4]).string());
+    else if (argc != 3) { std::fprintf(stderr, "%s", kCheckHelp); return 64; }
     return check(argv[2]);
   }
   if (cmd == "eval") {

@@ -105,6 +105,21 @@ bool orientSequence(int code, int* first, int* second, int* third) {
   return true;
 }
 
+bool orientBodySequence(int code, int component, int* first, int* second, int* third,
+                        int* bodyComponent) {
+  static const int table[12][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1},
+                                   {1, 0, 2}, {2, 1, 0}, {0, 1, 0}, {0, 2, 0},
+                                   {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
+  if (code < 1 || code > 24 || component < 1 || component > 3) return false;
+  const int* axes = table[(code - 1) % 12];
+  const bool spaceFixed = code > 12;
+  *first = spaceFixed ? axes[2] : axes[0];
+  *second = axes[1];
+  *third = spaceFixed ? axes[0] : axes[2];
+  *bodyComponent = spaceFixed ? 4 - component : component;
+  return true;
+}
+
 Eigen::Vector4d quaternionFromMatrix(const Eigen::Matrix3d& a) {
   const double tr = a.trace();
   Eigen::Vector4d q;

@@ -18,6 +18,14 @@ Eigen::Vector3d euler313FromMatrix(const Eigen::Matrix3d& a);
 Eigen::Vector3d bodyFixedAngles(const Eigen::Matrix3d& a, int first, int second, int third);
 // ORIENT system codes 1..10 (digest 2.3) as axis sequences; false for other codes.
 bool orientSequence(int code, int* first, int* second, int* third);
+// ORIENT codes 1..24 as the body-fixed sequence whose angle answers ORIENT(code, component):
+// codes 1..12 are the body-fixed sequences 1-2-3, 2-3-1, 3-1-2, 1-3-2, 2-1-3, 3-2-1, 1-2-1,
+// 1-3-1, 2-1-2, 2-3-2, 3-1-3, 3-2-3 and codes 13..24 the space-fixed ones in the same order.
+// A space-fixed a-b-c rotation by (t1, t2, t3) is R_c(t3) R_b(t2) R_a(t1), the body-fixed c-b-a
+// rotation by (t3, t2, t1), so its component k (1..3) is component 4 - k of the reversed body
+// sequence. *bodyComponent is 1-based. False for other codes.
+bool orientBodySequence(int code, int component, int* first, int* second, int* third,
+                        int* bodyComponent);
 
 // Axis-point frame: z along (zPoint - origin); x toward xPoint, made orthogonal to z.
 // Returns false when the points are degenerate (coincident or collinear).

@@ -40,6 +40,7 @@ bool Expression::parse(const std::string& text, const SourceLocation& where,
   out.program_ = std::make_unique<Program>(text, std::move(parsed.hostCalls),
                                            compileProgram(parsed.root, hostCount));
   out.program_->setDataCalls(std::move(parsed.dataCalls));
+  if (parsed.user) out.program_->setUserCall(std::move(*parsed.user));
   return true;
 }
 
@@ -66,6 +67,10 @@ void Expression::bindSpline(std::size_t call, std::shared_ptr<const Spline> spli
 
 void Expression::bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve) {
   if (program_) program_->bindCurve(call, std::move(curve));
+}
+
+const UserCall* Expression::userCall() const {
+  return program_ ? program_->userCall() : nullptr;
 }
 
 double Expression::evaluate(const double* hostValues, double time) const {

@@ -42,6 +42,15 @@ struct DataCall {
   int order = 0;      // iord: 0 value, 1 first, 2 second derivative (in x or alpha)
   int component = 0;  // CURVE: 1, 2, 3 = x, y, z; 0 otherwise
   int column = 0;     // 1-based column of the function name within the expression text
+  // Constant arguments of INTERP (degree: 1 or 3) and INVPSD (f0, f1, nf, linlog, seed).
+  std::vector<double> parameters;
+};
+
+// FUNCTION=USER(r1, ..., r30): the constants for a user subroutine, kept as written (folded to
+// numbers). The expression's own value is NaN: the subroutine supplies it.
+struct UserCall {
+  std::vector<double> arguments;
+  int column = 0;  // column of USER within the expression text
 };
 
 // Value and first two time derivatives of an expression that depends on TIME only.
@@ -84,6 +93,9 @@ class Expression {
   const std::vector<DataCall>& dataCalls() const;
   void bindSpline(std::size_t call, std::shared_ptr<const Spline> spline);
   void bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve);
+
+  // The USER(...) call when the expression is one, else nullptr.
+  const UserCall* userCall() const;
 
   // Value. hostValues has hostCalls().size() entries. No allocation.
   double evaluate(const double* hostValues, double time) const;

@@ -33,6 +33,10 @@ NameInfo unsupported(std::string_view name) {
   return {name, NameKind::Unsupported, 0, 0, Builtin::Abs, 0.0, name};
 }
 
+NameInfo vectorHost(std::string_view name, int maxArgs, std::string_view usage) {
+  return {name, NameKind::VectorHost, 1, maxArgs, Builtin::Abs, 0.0, usage};
+}
+
 NameInfo vectorName(std::string_view name) {
   return {name, NameKind::Vector, 0, 0, Builtin::Abs, 0.0, name};
 }
@@ -137,17 +141,26 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(dataFunction("AKISPL", 3, 4, "AKISPL(x, z, id[, iord])"));
   c.push_back(dataFunction("CUBSPL", 3, 4, "CUBSPL(x, z, id[, iord])"));
   c.push_back(dataFunction("CURVE", 4, 4, "CURVE(alpha, iord, comp, id)"));
+  // INTERP reads a time-series SPLINE (degree 1 linear, 3 cubic); INVPSD regenerates a signal
+  // from a PSD SPLINE (docs/expressions.md records where these definitions come from).
+  c.push_back(dataFunction("INTERP", 3, 4, "INTERP(x, degree, id[, iord])"));
+  c.push_back(dataFunction("INVPSD", 7, 7, "INVPSD(x, id, f0, f1, nf, linlog, seed)"));
+  c.push_back({"USER", NameKind::User, 0, 30, Builtin::Abs, 0.0, "USER(r1[, ..., r30])"});
 
-  // Need model data or user code that expressions cannot reach yet (INTERP: its definition was
-  // not found, digest 3.5).
-  for (std::string_view n : {"INTERP", "DELAY", "INVPSD", "AO", "USER",
-                             "FXFREQ", "FXMODE"}) {
-    c.push_back(unsupported(n));
-  }
-  for (std::string_view n : {"DXYZ", "VXYZ", "WXYZ", "ACCXYZ", "WDTXYZ", "FXYZ", "TXYZ", "MAG",
-                             "UV", "UVX", "UVY", "UVZ", "TRANS"}) {
-    c.push_back(vectorName(n));
-  }
+  // Need run history, modal data or a definition that was not found (digest 3.4, 3.5).
+  for (std::string_view n : {"DELAY", "AO", "FXFREQ", "FXMODE"}) c.push_back(unsupported(n));
+
+  // Vectors (digest 3.1, 3.9): component triples of the host measures, MAG and UV.
+  c.push_back(vectorHost("DXYZ", 3, "DXYZ(i[, j][, k])"));
+  c.push_back(vectorHost("VXYZ", 4, "VXYZ(i[, j][, k][, l])"));
+  c.push_back(vectorHost("WXYZ", 3, "WXYZ(i[, j][, k])"));
+  c.push_back(vectorHost("ACCXYZ", 4, "ACCXYZ(i[, j][, k][, l])"));
+  c.push_back(vectorHost("WDTXYZ", 4, "WDTXYZ(i[, j][, k][, l])"));
+  c.push_back(vectorHost("FXYZ", 3, "FXYZ(i[, j][, k])"));
+  c.push_back(vectorHost("TXYZ", 3, "TXYZ(i[, j][, k])"));
+  c.push_back({"MAG", NameKind::VectorFunction, 1, 1, Builtin::Abs, 0.0, "MAG(v)"});
+  c.push_back({"UV", NameKind::VectorFunction, 1, 1, Builtin::Abs, 0.0, "UV(v)"});
+  for (std::string_view n : {"UVX", "UVY", "UVZ", "TRANS"}) c.push_back(vectorName(n));
   return c;
 }
 

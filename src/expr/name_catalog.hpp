@@ -19,8 +19,11 @@ enum class NameKind {
   HostFunction,  // DX(...), JOINT(...), VARVAL(...): value supplied by the host
   HostVariable,  // MODE, HSIZE, ...: zero-argument host calls, written without parentheses
   DataFunction,  // AKISPL, CUBSPL, CURVE: expression arguments and the id of model data
-  Unsupported,   // recognised, refused with "not supported yet" (splines, USER, ...)
-  Vector,        // vector-valued (DXYZ, MAG, UV, ...): refused, vectors are not supported yet
+  Unsupported,   // recognised, refused with "not supported yet" (DELAY, AO, ...)
+  VectorHost,    // DXYZ, VXYZ, ...: the three components of a host measure (DX, DY, DZ, ...)
+  VectorFunction,  // MAG(v), UV(v): functions of a vector
+  Vector,        // other vector functions (UVX, TRANS, ...): refused, not supported yet
+  User,          // USER(r1, ..., r30): constants for a user subroutine
 };
 
 struct NameInfo {

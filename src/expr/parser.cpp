@@ -1,10 +1,14 @@
 #include "expr/parser.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <limits>
+#include <optional>
 #include <string_view>
 #include <utility>
 
+#include "expr/compiler.hpp"
 #include "expr/lexer.hpp"
 #include "expr/name_catalog.hpp"
 
@@ -30,7 +34,9 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 bool isCallable(NameKind kind) {
   return kind == NameKind::Builtin || kind == NameKind::Conditional ||
          kind == NameKind::HostFunction || kind == NameKind::Unsupported ||
-         kind == NameKind::Vector || kind == NameKind::DataFunction;
+         kind == NameKind::Vector || kind == NameKind::DataFunction ||
+         kind == NameKind::VectorHost || kind == NameKind::VectorFunction ||
+         kind == NameKind::User;
 }
 
 // The closest known name of the wanted sort, when it is close enough to be a likely typo.
@@ -65,10 +71,71 @@ std::string allowedCounts(const NameInfo& info) {
   return std::to_string(info.minArguments) + " to " + std::to_string(info.maxArguments);
 }
 
+// A parsed operand: a scalar, or a vector written out as its three scalar components. Vector
+// operations (+, -, *, /, %, MAG, UV) expand into scalar trees here, so the compiler and the
+// evaluators only ever see scalars.
+struct Value {
+  SyntaxNode node;                     // the scalar, when !isVector
+  bool isVector = false;
+  std::array<SyntaxNode, 3> parts;     // x, y, z components, when isVector
+};
+
 struct Argument {
   SyntaxNode node;
   int column = 0;  // first character of the argument
+  bool isVector = false;
+  std::array<SyntaxNode, 3> parts;
 };
+
+SyntaxNode numberNode(double value, int column) {
+  SyntaxNode node;
+  node.kind = NodeKind::Number;
+  node.column = column;
+  node.number = value;
+  return node;
+}
+
+SyntaxNode makeNode(NodeKind kind, int column, std::vector<SyntaxNode> children) {
+  SyntaxNode node;
+  node.kind = kind;
+  node.column = column;
+  node.children = std::move(children);
+  return node;
+}
+
+// True when a subtree reads neither TIME nor the host nor model data.
+bool constantTree(const SyntaxNode& node) {
+  if (node.kind == NodeKind::Time || node.kind == NodeKind::Host ||
+      node.kind == NodeKind::DataCall) {
+    return false;
+  }
+  for (const SyntaxNode& child : node.children) {
+    if (!constantTree(child)) return false;
+  }
+  return true;
+}
+
+Value scalarValue(SyntaxNode node) {
+  Value v;
+  v.node = std::move(node);
+  return v;
+}
+
+SyntaxNode dotProduct(const std::array<SyntaxNode, 3>& a, const std::array<SyntaxNode, 3>& b,
+                      int column) {
+  SyntaxNode sum = makeNode(NodeKind::Multiply, column, {a[0], b[0]});
+  for (int k = 1; k < 3; ++k) {
+    sum = makeNode(NodeKind::Add, column,
+                   {std::move(sum), makeNode(NodeKind::Multiply, column, {a[k], b[k]})});
+  }
+  return sum;
+}
+
+SyntaxNode magnitude(const std::array<SyntaxNode, 3>& a, int column) {
+  SyntaxNode root = makeNode(NodeKind::Call, column, {dotProduct(a, a, column)});
+  root.builtin = Builtin::Sqrt;
+  return root;
+}
 
 class Parser {
  public:
@@ -79,12 +146,18 @@ class Parser {
     if (tokens_.front().kind == TokenKind::End) {
       fail(1, "the expression is empty", "Write a number or a function expression, e.g. 0.");
     } else if (checkParentheses()) {
-      SyntaxNode root = expression();
+      Value root = expression();
       if (ok_ && current().kind != TokenKind::End) trailingToken();
-      result.root = std::move(root);
+      if (ok_ && root.isVector) {
+        report(1, "the expression is a vector " + atColumn(1) + ", but a function must be a scalar",
+               "Reduce it to a scalar with MAG(v), a dot product v*w, or a component function "
+               "(DX, VX, ...).");
+      }
+      result.root = std::move(root.node);
     }
     result.hostCalls = std::move(hostCalls_);
     result.dataCalls = std::move(dataCalls_);
+    result.user = std::move(user_);
     result.errors = std::move(errors_);
     return result;
   }
@@ -139,82 +212,135 @@ class Parser {
   }
 
   SyntaxNode binary(NodeKind kind, int column, SyntaxNode left, SyntaxNode right) {
-    SyntaxNode node;
-    node.kind = kind;
-    node.column = column;
-    node.children.push_back(std::move(left));
-    node.children.push_back(std::move(right));
-    return node;
+    return makeNode(kind, column, {std::move(left), std::move(right)});
   }
 
-  SyntaxNode expression() {
-    SyntaxNode left = term();
+  void vectorMisuse(int column, const std::string& what, const std::string& hint) {
+    report(column, what + " " + atColumn(column), hint);
+  }
+
+  // a + b, a - b: both scalars or both vectors.
+  Value addValues(NodeKind kind, int column, Value a, Value b) {
+    if (a.isVector != b.isVector) {
+      vectorMisuse(column, std::string("'") + (kind == NodeKind::Add ? '+' : '-') +
+                               "' between a scalar and a vector",
+                   "Add scalars to scalars and vectors to vectors.");
+      return scalarValue(SyntaxNode{});
+    }
+    if (!a.isVector) return scalarValue(binary(kind, column, std::move(a.node), std::move(b.node)));
+    for (int k = 0; k < 3; ++k) a.parts[k] = binary(kind, column, a.parts[k], b.parts[k]);
+    return a;
+  }
+
+  // s*s, s*v, v*s (scaling), v*v (dot product); s/s and v/s.
+  Value multiplyValues(NodeKind kind, int column, Value a, Value b) {
+    if (kind == NodeKind::Divide && b.isVector) {
+      vectorMisuse(column, "'/' by a vector", "Divide by a scalar only; ADAMS has no vector "
+                                              "division.");
+      return scalarValue(SyntaxNode{});
+    }
+    if (!a.isVector && !b.isVector) {
+      return scalarValue(binary(kind, column, std::move(a.node), std::move(b.node)));
+    }
+    if (a.isVector && b.isVector) return scalarValue(dotProduct(a.parts, b.parts, column));
+    Value vector = a.isVector ? std::move(a) : std::move(b);
+    const SyntaxNode& factor = a.isVector ? b.node : a.node;
+    const bool vectorFirst = a.isVector || kind == NodeKind::Divide;
+    for (int k = 0; k < 3; ++k) {
+      vector.parts[k] = vectorFirst ? binary(kind, column, vector.parts[k], factor)
+                                    : binary(kind, column, factor, vector.parts[k]);
+    }
+    return vector;
+  }
+
+  // v % w: the cross product.
+  Value crossValues(int column, const Value& a, const Value& b) {
+    if (!a.isVector || !b.isVector) {
+      vectorMisuse(column, "'%' needs a vector on both sides",
+                   "'%' is the cross product of two vectors; use '*' for scalars.");
+      return scalarValue(SyntaxNode{});
+    }
+    Value out;
+    out.isVector = true;
+    for (int k = 0; k < 3; ++k) {
+      const int i = (k + 1) % 3, j = (k + 2) % 3;
+      out.parts[k] = binary(NodeKind::Subtract, column,
+                            binary(NodeKind::Multiply, column, a.parts[i], b.parts[j]),
+                            binary(NodeKind::Multiply, column, a.parts[j], b.parts[i]));
+    }
+    return out;
+  }
+
+  Value expression() {
+    Value left = term();
     while (ok_ && (current().kind == TokenKind::Plus || current().kind == TokenKind::Minus)) {
       const Token& op = advance();
-      SyntaxNode right = term();
-      left = binary(op.kind == TokenKind::Plus ? NodeKind::Add : NodeKind::Subtract, op.column,
-                    std::move(left), std::move(right));
+      Value right = term();
+      left = addValues(op.kind == TokenKind::Plus ? NodeKind::Add : NodeKind::Subtract, op.column,
+                       std::move(left), std::move(right));
     }
     return left;
   }
 
-  SyntaxNode term() {
-    SyntaxNode left = unary();
+  Value term() {
+    Value left = unary();
     while (ok_) {
       const TokenKind kind = current().kind;
-      if (kind == TokenKind::Percent) {
-        vectorsNotSupported(current().column, "'%'");
-        break;
-      }
-      if (kind != TokenKind::Star && kind != TokenKind::Slash) break;
+      if (kind != TokenKind::Star && kind != TokenKind::Slash && kind != TokenKind::Percent) break;
       const Token& op = advance();
-      SyntaxNode right = unary();
-      left = binary(kind == TokenKind::Star ? NodeKind::Multiply : NodeKind::Divide, op.column,
-                    std::move(left), std::move(right));
+      Value right = unary();
+      if (kind == TokenKind::Percent) {
+        left = crossValues(op.column, left, right);
+      } else {
+        left = multiplyValues(kind == TokenKind::Star ? NodeKind::Multiply : NodeKind::Divide,
+                              op.column, std::move(left), std::move(right));
+      }
     }
     return left;
   }
 
-  SyntaxNode unary() {
+  Value unary() {
     if (current().kind == TokenKind::Plus) {
       advance();
       return unary();
     }
     if (current().kind == TokenKind::Minus) {
       const int column = advance().column;
-      SyntaxNode node;
-      node.kind = NodeKind::Negate;
-      node.column = column;
-      node.children.push_back(unary());
-      return node;
+      Value operand = unary();
+      if (!operand.isVector) {
+        return scalarValue(makeNode(NodeKind::Negate, column, {std::move(operand.node)}));
+      }
+      for (SyntaxNode& part : operand.parts) part = makeNode(NodeKind::Negate, column, {part});
+      return operand;
     }
     return power();
   }
 
-  SyntaxNode power() {
-    SyntaxNode base = primary();
+  Value power() {
+    Value base = primary();
     if (ok_ && current().kind == TokenKind::Power) {
       const int column = advance().column;
-      SyntaxNode exponent = unary();
-      return binary(NodeKind::Power, column, std::move(base), std::move(exponent));
+      Value exponent = unary();
+      if (base.isVector || exponent.isVector) {
+        vectorMisuse(column, "'**' with a vector operand", "'**' works on scalars only.");
+        return scalarValue(SyntaxNode{});
+      }
+      return scalarValue(
+          binary(NodeKind::Power, column, std::move(base.node), std::move(exponent.node)));
     }
     return base;
   }
 
-  SyntaxNode primary() {
+  Value primary() {
     const Token& token = current();
     switch (token.kind) {
       case TokenKind::Number: {
         advance();
-        SyntaxNode node;
-        node.kind = NodeKind::Number;
-        node.column = token.column;
-        node.number = token.number;
-        return node;
+        return scalarValue(numberNode(token.number, token.column));
       }
       case TokenKind::LeftParen: {
         advance();
-        SyntaxNode inner = expression();
+        Value inner = expression();
         if (ok_ && current().kind != TokenKind::RightParen) {
           fail(current().column,
                "expected ')' " + atColumn(current().column) + ", found " + describe(current()),
@@ -226,8 +352,7 @@ class Parser {
       case TokenKind::Name:
         return name();
       case TokenKind::LeftBracket:
-        vectorsNotSupported(token.column, "'['");
-        return {};
+        return vectorLiteral();
       default:
         fail(token.column,
              "expected a number, a name or '(' " + atColumn(token.column) + ", found " +
@@ -237,12 +362,42 @@ class Parser {
     }
   }
 
-  void vectorsNotSupported(int column, const std::string& what) {
-    fail(column, "vector expressions are not supported yet: " + what + " " + atColumn(column),
-         "Write the scalar components instead (DX, DY, DZ, VX, ...).");
+  // [a, b, c]: three scalar expressions.
+  Value vectorLiteral() {
+    const int open = advance().column;
+    Value out;
+    out.isVector = true;
+    for (int k = 0; k < 3 && ok_; ++k) {
+      const int column = current().column;
+      Value component = expression();
+      if (!ok_) break;
+      if (component.isVector) {
+        vectorMisuse(column, "component " + std::to_string(k + 1) + " of '[' at column " +
+                                 std::to_string(open) + " is a vector",
+                     "Each component of [a, b, c] is a scalar.");
+      }
+      out.parts[k] = std::move(component.node);
+      const TokenKind want = k < 2 ? TokenKind::Comma : TokenKind::RightBracket;
+      if (current().kind != want) {
+        fail(current().column,
+             std::string("expected ") + (k < 2 ? "','" : "']'") + " " +
+                 atColumn(current().column) + ", found " + describe(current()),
+             "Write a vector as [a, b, c], three components in brackets.");
+        break;
+      }
+      advance();
+    }
+    return out;
   }
 
-  SyntaxNode name() {
+  void vectorsNotSupported(int column, const std::string& what) {
+    fail(column, "vector function " + what + " " + atColumn(column) + " is not supported yet",
+         "The supported vector functions are DXYZ, VXYZ, WXYZ, ACCXYZ, WDTXYZ, FXYZ, TXYZ, MAG "
+         "and UV, with [a, b, c], +, -, * (dot product or scaling), / by a scalar and % (cross "
+         "product).");
+  }
+
+  Value name() {
     const Token& token = advance();
     const NameInfo* info = findName(token.upper);
     if (token.blankBeforeParen > 0 && (info == nullptr || isCallable(info->kind))) {
@@ -267,25 +422,26 @@ class Parser {
                             "HSIZE, ORDER, NJAC, NRHS and CPU; a function call needs '(' right "
                             "after its name."
                           : "Did you mean " + near + "?");
-      return node;
+      return scalarValue(std::move(node));
     }
     switch (info->kind) {
       case NameKind::Constant:
         node.number = info->value;
-        return node;
+        break;
       case NameKind::Time:
         node.kind = NodeKind::Time;
-        return node;
+        break;
       case NameKind::HostVariable:
         node.kind = NodeKind::Host;
         node.hostIndex = hostIndex(HostCall{token.upper, {}, token.column});
-        return node;
+        break;
       default:
         report(token.column,
                token.upper + " " + atColumn(token.column) + " needs its arguments in parentheses",
                "Write " + usageOf(*info) + ", with no blank before '('.");
-        return node;
+        break;
     }
+    return scalarValue(std::move(node));
   }
 
   // Reads '(' arguments ')'. Separators are ',' except the one after IF's first argument,
@@ -300,8 +456,11 @@ class Parser {
     while (ok_) {
       Argument arg;
       arg.column = current().column;
-      arg.node = expression();
+      Value value = expression();
       if (!ok_) break;
+      arg.node = std::move(value.node);
+      arg.isVector = value.isVector;
+      arg.parts = std::move(value.parts);
       args.push_back(std::move(arg));
       const Token& separator = current();
       if (separator.kind == TokenKind::RightParen) {
@@ -343,46 +502,145 @@ class Parser {
     return false;
   }
 
-  SyntaxNode call(const Token& nameToken, const NameInfo* info) {
+  // Every argument of a scalar function must be a scalar.
+  bool scalarArguments(const Token& nameToken, const std::vector<Argument>& args) {
+    bool ok = true;
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      if (!args[k].isVector) continue;
+      report(args[k].column,
+             nameToken.upper + " argument " + std::to_string(k + 1) + " " +
+                 atColumn(args[k].column) + " is a vector, but " + nameToken.upper +
+                 " takes scalars",
+             "Pass a scalar: MAG(v), a dot product v*w, or a component function.");
+      ok = false;
+    }
+    return ok;
+  }
+
+  Value call(const Token& nameToken, const NameInfo* info) {
     const bool isIf = info != nullptr && info->kind == NameKind::Conditional;
     std::vector<Argument> args = arguments(nameToken, isIf);
     SyntaxNode node;
     node.column = nameToken.column;
-    if (!ok_) return node;
+    if (!ok_) return scalarValue(std::move(node));
     if (info == nullptr) {
       const std::string near = suggestion(nameToken.upper, true);
       report(nameToken.column,
              "unknown function '" + nameToken.upper + "' " + atColumn(nameToken.column),
              near.empty() ? "See docs/expressions.md for the functions available."
                           : "Did you mean " + near + "?");
-      return node;
+      return scalarValue(std::move(node));
     }
+    if (info->kind == NameKind::VectorFunction) return vectorFunction(nameToken, *info, args);
+    if (!scalarArguments(nameToken, args)) return scalarValue(std::move(node));
     switch (info->kind) {
       case NameKind::Builtin:
       case NameKind::Conditional:
-        if (!checkCount(nameToken, *info, args.size())) return node;
+        if (!checkCount(nameToken, *info, args.size())) break;
         node.kind = isIf ? NodeKind::If : NodeKind::Call;
         node.builtin = info->builtin;
         for (Argument& arg : args) node.children.push_back(std::move(arg.node));
-        return node;
+        break;
       case NameKind::HostFunction:
-        return hostCall(nameToken, *info, args);
+        return scalarValue(hostCall(nameToken, *info, args));
+      case NameKind::VectorHost:
+        return vectorHost(nameToken, *info, args);
       case NameKind::DataFunction:
-        return dataCall(nameToken, *info, args);
+        return scalarValue(dataCall(nameToken, *info, args));
+      case NameKind::User:
+        return scalarValue(userCall(nameToken, *info, args));
       case NameKind::Unsupported:
         report(nameToken.column,
                nameToken.upper + " " + atColumn(nameToken.column) + " is not supported yet",
-               nameToken.upper == "USER"
-                   ? "User subroutines are not available yet; write the force as an expression."
+               nameToken.upper == "DELAY"
+                   ? "DELAY needs the history of its argument over the run, which expressions "
+                     "cannot keep yet; model the delay with a DIFF (e.g. a Pade approximant)."
                    : "This function is not available to expressions yet; see "
                      "docs/expressions.md for the functions available.");
-        return node;
+        break;
       default:
         report(nameToken.column,
                nameToken.upper + " " + atColumn(nameToken.column) + " takes no arguments",
                "Write " + nameToken.upper + " without parentheses.");
-        return node;
+        break;
     }
+    return scalarValue(std::move(node));
+  }
+
+  // DXYZ(i[, j][, k]) = [DX(...), DY(...), DZ(...)], and likewise VXYZ, WXYZ, ACCXYZ, WDTXYZ,
+  // FXYZ, TXYZ: three host calls with the same arguments.
+  Value vectorHost(const Token& nameToken, const NameInfo& info, std::vector<Argument>& args) {
+    // A refused call still yields a (placeholder) vector, so MAG(DXYZ(1.5)) reports the id
+    // only, not also "MAG of a scalar".
+    Value out;
+    out.isVector = true;
+    if (!checkCount(nameToken, info, args.size())) return out;
+    bool valid = true;  // check the ids once, under the name as written
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      long id = 0;
+      if (!integerConstant(nameToken.upper, static_cast<int>(k) + 1, args[k], id)) valid = false;
+    }
+    if (!valid) return out;
+    const std::string stem = nameToken.upper.substr(0, nameToken.upper.size() - 3);
+    const char* axes[3] = {"X", "Y", "Z"};
+    for (int k = 0; k < 3; ++k) {
+      Token component = nameToken;
+      component.upper = stem + axes[k];
+      const NameInfo* scalar = findName(component.upper);
+      out.parts[k] = hostCall(component, *scalar, args);
+    }
+    return out;
+  }
+
+  // MAG(v) = |v|; UV(v) = v / |v|.
+  Value vectorFunction(const Token& nameToken, const NameInfo& info,
+                       std::vector<Argument>& args) {
+    if (!checkCount(nameToken, info, args.size())) return scalarValue(SyntaxNode{});
+    if (!args[0].isVector) {
+      report(args[0].column,
+             nameToken.upper + " argument 1 " + atColumn(args[0].column) +
+                 " is a scalar, but " + nameToken.upper + " takes a vector",
+             "Pass a vector such as DXYZ(i, j) or [a, b, c]; for a scalar use ABS.");
+      return scalarValue(SyntaxNode{});
+    }
+    SyntaxNode length = magnitude(args[0].parts, nameToken.column);
+    if (nameToken.upper == "MAG") return scalarValue(std::move(length));
+    Value out;
+    out.isVector = true;
+    for (int k = 0; k < 3; ++k) {
+      out.parts[k] = binary(NodeKind::Divide, nameToken.column, args[0].parts[k], length);
+    }
+    return out;
+  }
+
+  // USER(r1, ..., r30): the constants handed to a user subroutine. It must be the whole
+  // expression, as in ADAMS (FUNCTION=USER(...)). Its value comes from the subroutine, so the
+  // node itself is a NaN placeholder; the model builder refuses an expression with a USER call
+  // until a subroutine is loaded for it.
+  SyntaxNode userCall(const Token& nameToken, const NameInfo& info, std::vector<Argument>& args) {
+    SyntaxNode node = numberNode(std::numeric_limits<double>::quiet_NaN(), nameToken.column);
+    if (!checkCount(nameToken, info, args.size())) return node;
+    if (tokens_.front().column != nameToken.column || current().kind != TokenKind::End) {
+      report(nameToken.column,
+             "USER " + atColumn(nameToken.column) + " must be the whole function",
+             "Write FUNCTION=USER(r1, ..., r30) on its own; the subroutine computes the value.");
+      return node;
+    }
+    UserCall user;
+    user.column = nameToken.column;
+    for (std::size_t k = 0; k < args.size(); ++k) {
+      if (!constantTree(args[k].node)) {
+        report(args[k].column,
+               "USER argument " + std::to_string(k + 1) + " " + atColumn(args[k].column) +
+                   " must be a constant",
+               "USER passes constants to the subroutine; the subroutine reads the state "
+               "itself.");
+        continue;
+      }
+      user.arguments.push_back(foldConstant(args[k].node));
+    }
+    user_ = std::move(user);
+    return node;
   }
 
   // Host-call arguments are ids and flags: integer constants, optionally signed.
@@ -413,8 +671,10 @@ class Parser {
     SyntaxNode node;
     node.column = nameToken.column;
     if (!checkCount(nameToken, info, args.size())) return node;
+    if (nameToken.upper == "INTERP") return interpCall(nameToken, args);
+    if (nameToken.upper == "INVPSD") return psdCall(nameToken, args);
     const bool isCurve = nameToken.upper == "CURVE";
-    DataCall call{nameToken.upper, 0, 0, 0, nameToken.column};
+    DataCall call{nameToken.upper, 0, 0, 0, nameToken.column, {}};
     const std::vector<std::size_t> integers =
         isCurve ? std::vector<std::size_t>{1, 2, 3} : std::vector<std::size_t>{2, 3};
     bool valid = true;
@@ -463,6 +723,101 @@ class Parser {
     node.dataIndex = dataCalls_.size();
     dataCalls_.push_back(std::move(call));
     return node;
+  }
+
+  SyntaxNode finishDataCall(DataCall call, SyntaxNode x) {
+    SyntaxNode node = makeNode(NodeKind::DataCall, call.column, {std::move(x)});
+    node.dataIndex = dataCalls_.size();
+    dataCalls_.push_back(std::move(call));
+    return node;
+  }
+
+  bool positiveId(const std::string& function, std::size_t k, const Argument& arg, long id) {
+    if (id > 0) return true;
+    report(arg.column,
+           function + " argument " + std::to_string(k + 1) + " " + atColumn(arg.column) +
+               " must be the id of a SPLINE statement",
+           "Write the positive id of the data element.");
+    return false;
+  }
+
+  // INTERP(x, degree, id[, iord]): a time-series SPLINE read linearly (degree 1) or with a
+  // cubic spline (degree 3).
+  SyntaxNode interpCall(const Token& nameToken, std::vector<Argument>& args) {
+    long values[4] = {0, 0, 0, 0};
+    bool valid = true;
+    for (std::size_t k = 1; k < args.size(); ++k) {
+      if (!integerConstant("INTERP", static_cast<int>(k) + 1, args[k], values[k])) valid = false;
+    }
+    if (!valid) return SyntaxNode{};
+    if (values[1] != 1 && values[1] != 3) {
+      report(args[1].column,
+             "INTERP argument 2 " + atColumn(args[1].column) + " (degree) is " +
+                 std::to_string(values[1]) + ", but it must be 1 or 3",
+             "Write 1 for linear or 3 for cubic interpolation.");
+      valid = false;
+    }
+    if (values[3] < 0 || values[3] > 2) {
+      report(args[3].column,
+             "INTERP argument 4 " + atColumn(args[3].column) + " (iord) is " +
+                 std::to_string(values[3]) + ", but it must be 0, 1 or 2",
+             "Write 0 for the value, 1 or 2 for the first or second derivative.");
+      valid = false;
+    }
+    if (!positiveId("INTERP", 2, args[2], values[2]) || !valid) return SyntaxNode{};
+    DataCall call{"INTERP", values[2], static_cast<int>(values[3]), 0, nameToken.column,
+                  {static_cast<double>(values[1])}};
+    return finishDataCall(std::move(call), std::move(args[0].node));
+  }
+
+  // INVPSD(x, id, f0, f1, nf, linlog, seed): id, nf and linlog are integers; f0, f1 and seed
+  // are constants.
+  SyntaxNode psdCall(const Token& nameToken, std::vector<Argument>& args) {
+    bool valid = true;
+    long id = 0, count = 0, logarithmic = 0;
+    if (!integerConstant("INVPSD", 2, args[1], id)) valid = false;
+    if (!integerConstant("INVPSD", 5, args[4], count)) valid = false;
+    if (!integerConstant("INVPSD", 6, args[5], logarithmic)) valid = false;
+    double reals[3] = {0.0, 0.0, 0.0};
+    const std::size_t realAt[3] = {2, 3, 6};
+    for (int r = 0; r < 3; ++r) {
+      const Argument& arg = args[realAt[r]];
+      if (!constantTree(arg.node)) {
+        report(arg.column,
+               "INVPSD argument " + std::to_string(realAt[r] + 1) + " " + atColumn(arg.column) +
+                   " must be a constant",
+               "f0, f1 and seed are numbers fixed for the run.");
+        valid = false;
+        continue;
+      }
+      reals[r] = foldConstant(arg.node);
+    }
+    if (!valid) return SyntaxNode{};
+    if (count < 2) {
+      report(args[4].column,
+             "INVPSD argument 5 " + atColumn(args[4].column) + " (nf) is " +
+                 std::to_string(count) + ", but at least 2 frequencies are needed",
+             "Give the number of frequencies between f0 and f1, 2 or more.");
+      valid = false;
+    }
+    if (logarithmic != 0 && logarithmic != 1) {
+      report(args[5].column,
+             "INVPSD argument 6 " + atColumn(args[5].column) + " (linlog) is " +
+                 std::to_string(logarithmic) + ", but it must be 0 or 1",
+             "Write 0 to read the PSD linearly or 1 to read it in the logarithmic domain.");
+      valid = false;
+    }
+    if (!(reals[0] >= 0.0 && reals[1] > reals[0])) {
+      report(args[2].column,
+             "INVPSD frequencies " + atColumn(args[2].column) + " must satisfy 0 <= f0 < f1",
+             "Give the lowest and the highest frequency to regenerate, in increasing order.");
+      valid = false;
+    }
+    if (!positiveId("INVPSD", 1, args[1], id) || !valid) return SyntaxNode{};
+    DataCall call{"INVPSD", id, 0, 0, nameToken.column,
+                  {reals[0], reals[1], static_cast<double>(count),
+                   static_cast<double>(logarithmic), reals[2]}};
+    return finishDataCall(std::move(call), std::move(args[0].node));
   }
 
   bool integerConstant(const std::string& function, int position, const Argument& arg, long& out) {
@@ -526,6 +881,7 @@ class Parser {
   std::vector<ExpressionError> errors_;
   std::vector<HostCall> hostCalls_;
   std::vector<DataCall> dataCalls_;
+  std::optional<UserCall> user_;
 };
 
 }  // namespace

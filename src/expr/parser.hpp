@@ -3,6 +3,7 @@
 // name resolution against the catalog and the checks that need no model: argument counts,
 // integer-constant arguments of host calls, unsupported and unknown names.
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -16,6 +17,7 @@ struct ParseResult {
   SyntaxNode root;
   std::vector<HostCall> hostCalls;      // deduplicated, first-appearance order
   std::vector<DataCall> dataCalls;      // one per call, in order of appearance
+  std::optional<UserCall> user;         // FUNCTION=USER(...)
   std::vector<ExpressionError> errors;  // empty on success
 
   bool ok() const { return errors.empty(); }

@@ -63,6 +63,7 @@ Program::Program(const Program& other)
       hostCalls_(other.hostCalls_),
       dataCalls_(other.dataCalls_),
       bindings_(other.bindings_),
+      user_(other.user_),
       code_(other.code_) {
   if (!fitsOnStack()) scratch_ = std::make_unique<Scratch>(code_);
 }
@@ -77,7 +78,11 @@ void Program::setDataCalls(std::vector<DataCall> calls) {
     DataBinding& b = bindings_[k];
     b.kind = call.name == "AKISPL"   ? DataBinding::Kind::Akima
              : call.name == "CUBSPL" ? DataBinding::Kind::Cubic
+             : call.name == "INVPSD" ? DataBinding::Kind::Psd
+             : call.name == "INTERP" ? (call.parameters.at(0) == 1.0 ? DataBinding::Kind::InterpLinear
+                                                                     : DataBinding::Kind::InterpCubic)
                                      : DataBinding::Kind::Curve;
+    b.parameters = call.parameters;
     b.order = call.order;
     b.component = call.component > 0 ? call.component - 1 : 0;
   }
@@ -85,6 +90,14 @@ void Program::setDataCalls(std::vector<DataCall> calls) {
 
 void Program::bindSpline(std::size_t call, std::shared_ptr<const Spline> spline) {
   DataBinding& b = bindings_.at(call);
+  // INTERP and INVPSD precompute their tables from the SPLINE once, here.
+  if (b.kind == DataBinding::Kind::InterpLinear && spline) {
+    b.table = std::make_shared<const LinearTable>(*spline);
+  } else if (b.kind == DataBinding::Kind::Psd && spline) {
+    const std::vector<double>& q = b.parameters;
+    b.psd = std::make_shared<const PsdSignal>(*spline, q.at(0), q.at(1), static_cast<int>(q.at(2)),
+                                              static_cast<int>(q.at(3)), q.at(4));
+  }
   b.spline = spline.get();
   b.splineOwner = std::move(spline);
 }

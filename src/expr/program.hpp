@@ -18,12 +18,14 @@
 #include <cstdint>
 #include <limits>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "common/bspline_curve.hpp"
 #include "common/spline.hpp"
 #include "expr/builtin.hpp"
+#include "expr/data_functions.hpp"
 #include "expr/expression.hpp"
 #include "expr/jet.hpp"
 
@@ -49,7 +51,8 @@ enum class OpCode : std::uint8_t {
 // A data call bound to its data. The shared pointers keep the data alive; evaluation goes
 // through the plain pointers and non-virtual member functions.
 struct DataBinding {
-  enum class Kind : std::uint8_t { Akima, Cubic, Curve };
+  // InterpLinear/InterpCubic: INTERP with degree 1 or 3; Psd: INVPSD (data_functions.hpp).
+  enum class Kind : std::uint8_t { Akima, Cubic, Curve, InterpLinear, InterpCubic, Psd };
   Kind kind = Kind::Akima;
   int order = 0;      // iord
   int component = 0;  // CURVE: 0, 1, 2
@@ -57,9 +60,27 @@ struct DataBinding {
   const BSplineCurve* curve = nullptr;
   std::shared_ptr<const Spline> splineOwner;
   std::shared_ptr<const BSplineCurve> curveOwner;
+  std::shared_ptr<const LinearTable> table;  // INTERP degree 1
+  std::shared_ptr<const PsdSignal> psd;      // INVPSD
+  std::vector<double> parameters;            // DataCall::parameters
 
   // The call's value g(a, b) (a = x or alpha, b = z) with its first and second partials.
   BinaryPartials partials(double a, double b) const {
+    if (psd != nullptr) {
+      const ScalarJet j = psd->evaluate(a);
+      return {j.g, j.gx, 0.0, j.gxx, 0.0, 0.0};
+    }
+    if (table != nullptr) {
+      const ScalarJet j = table->evaluate(a);
+      const double d[5] = {j.g, j.gx, 0.0, 0.0, 0.0};  // a line: no second or third derivative
+      return {d[order], d[order + 1], 0.0, d[order + 2], 0.0, 0.0};
+    }
+    if (spline != nullptr && kind == Kind::InterpCubic) {
+      // A time series: one curve, read at its own z.
+      const double z = spline->z().empty() ? 0.0 : spline->z().front();
+      const SplinePartials p = spline->evaluate(SplineMethod::Cubic, a, z, order);
+      return {p.g, p.gx, 0.0, p.gxx, 0.0, 0.0};
+    }
     if (spline != nullptr) {
       const SplinePartials p = spline->evaluate(
           kind == Kind::Akima ? SplineMethod::Akima : SplineMethod::Cubic, a, b, order);
@@ -116,6 +137,8 @@ class Program {
   TimeJet evaluateJet(const TimeJet* hostJets, double time) const;
 
   const std::vector<DataCall>& dataCalls() const { return dataCalls_; }
+  const UserCall* userCall() const { return user_ ? &*user_ : nullptr; }
+  void setUserCall(UserCall call) { user_ = std::move(call); }
   void setDataCalls(std::vector<DataCall> calls);
   void bindSpline(std::size_t call, std::shared_ptr<const Spline> spline);
   void bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve);
@@ -143,6 +166,7 @@ class Program {
   std::vector<HostCall> hostCalls_;
   std::vector<DataCall> dataCalls_;
   std::vector<DataBinding> bindings_;  // bindings_[k] serves dataCalls_[k]
+  std::optional<UserCall> user_;
   ProgramCode code_;
   std::unique_ptr<Scratch> scratch_;  // only for programs too large for the stack arrays
 };

@@ -26,6 +26,13 @@ bool evaluateStandalone(const std::string& text, double time, double* value, dou
     }
     return false;
   }
+  if (const UserCall* user = expression.userCall()) {
+    diags.error(where, "",
+                "USER " + atColumn(user->column) +
+                    " needs a user subroutine, and the calculator loads none",
+                "Use numbers, constants, TIME and functions such as STEP or POLY.");
+    return false;
+  }
   double derivative = 0.0;
   const double result = expression.evaluate(nullptr, time, nullptr, &derivative);
   if (value != nullptr) *value = result;

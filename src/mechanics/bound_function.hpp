@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "common/dual.hpp"
+#include "mechanics/dynamic_measures.hpp"
 #include "mechanics/measures.hpp"
 #include "model/model.hpp"
 
@@ -33,10 +34,12 @@ T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
 }
 
 // The function's value at state y: its measures evaluated on T, then the expression.
+// Accelerations and reactions (dynamic_measures.hpp) come from `reads`: the residual passes
+// y' and the constraint set; without it they read as zero.
 template <class T>
 T evaluateFunction(const model::Model& m, const StateLayout& l, const model::BoundExpression& f,
                    double t, const T* y, std::vector<double>& scratchValues,
-                   std::vector<double>& scratchGrad) {
+                   std::vector<double>& scratchGrad, const DynamicReads<T>* reads = nullptr) {
   const size_t n = f.measures.size();
   T host[16];
   std::vector<T> big;
@@ -45,7 +48,10 @@ T evaluateFunction(const model::Model& m, const StateLayout& l, const model::Bou
     big.resize(n);
     hv = big.data();
   }
-  for (size_t k = 0; k < n; ++k) kinematicMeasure(m, l, f.measures[k], y, &hv[k]);
+  for (size_t k = 0; k < n; ++k)
+    if (!kinematicMeasure(m, l, f.measures[k], y, &hv[k]) &&
+        !dynamicMeasure(m, l, f.measures[k], y, reads, &hv[k]))
+      hv[k] = T(0.0);  // kinds the model builder refuses in functions; never uninitialised
   if (n == 0) {
     T zero(0.0);
     return evaluateBound(f, &zero, t, scratchValues, scratchGrad);

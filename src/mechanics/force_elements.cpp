@@ -56,8 +56,9 @@ int ForceElements::jMarker(ForceElementRef e) const {
 }
 
 void ForceElements::action(ForceElementRef e, bool atJ, double t, const double* y,
-                           Eigen::Vector3d& force, Eigen::Vector3d& torque) const {
-  const ElementLoads<double> l = loads(e, t, y);
+                           Eigen::Vector3d& force, Eigen::Vector3d& torque,
+                           const DynamicReads<double>* reads) const {
+  const ElementLoads<double> l = loads(e, t, y, reads);
   force.setZero();
   torque.setZero();
   if (!atJ) {

@@ -47,18 +47,20 @@ class ForceElements {
   // Every element in the order the residual applies them (SFORCEs first, in data-set order).
   const std::vector<ForceElementRef>& elements() const { return elements_; }
 
+  // `reads` lends functions y' and the constraints (accelerations, reactions; null: zero).
   template <class T>
-  ElementLoads<T> loads(ForceElementRef e, double t, const T* y) const;
+  ElementLoads<T> loads(ForceElementRef e, double t, const T* y,
+                        const DynamicReads<T>* reads = nullptr) const;
 
   // Subtracts every element's generalised force from the Newton-Euler rows of g.
   template <class T>
-  void addToResidual(double t, const T* y, T* g) const;
+  void addToResidual(double t, const T* y, T* g, const DynamicReads<T>* reads = nullptr) const;
 
   // Force and torque of element e on the part of its I marker (atJ false) or of its J / JFLOAT
   // marker (atJ true), in ground; the torque is about that marker's origin (a JFLOAT marker
   // sits at I). Zero at J for action-only elements.
   void action(ForceElementRef e, bool atJ, double t, const double* y, Eigen::Vector3d& force,
-              Eigen::Vector3d& torque) const;
+              Eigen::Vector3d& torque, const DynamicReads<double>* reads = nullptr) const;
 
   // The element's I marker and its J marker as the data set names it (JFLOAT for VFORCE,
   // VTORQUE, GFORCE; the J of an action-only SFORCE, which takes no reaction).
@@ -67,9 +69,9 @@ class ForceElements {
 
   // Value of SFORCE k's function (exposed for diagnostics).
   template <class T>
-  T sforceValue(int k, double t, const T* y) const {
+  T sforceValue(int k, double t, const T* y, const DynamicReads<T>* reads = nullptr) const {
     return evaluateFunction(*model_, layout_, model_->sforces[k].function, t, y,
-                            scratchValues_, scratchGrad_);
+                            scratchValues_, scratchGrad_, reads);
   }
 
   // The relative rotation about zJ of a rotational SPRINGDAMPER's markers, unwrapped about the
@@ -85,13 +87,14 @@ class ForceElements {
 
  private:
   template <class T>
-  ElementLoads<T> sforceLoads(int k, double t, const T* y) const;
+  ElementLoads<T> sforceLoads(int k, double t, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
   ElementLoads<T> springDamperLoads(int k, const T* y) const;
   template <class T>
   ElementLoads<T> linearFieldLoads(int k, const T* y) const;
   template <class T>
-  ElementLoads<T> vectorForceLoads(int k, double t, const T* y) const;
+  ElementLoads<T> vectorForceLoads(int k, double t, const T* y,
+                                   const DynamicReads<T>* reads) const;
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
                    bool hasForce, bool hasTorque, const T* y, T* g) const;
@@ -139,9 +142,10 @@ void ForceElements::fieldDisplacement(const MarkerState<T>& mi, const MarkerStat
 }
 
 template <class T>
-ElementLoads<T> ForceElements::sforceLoads(int k, double t, const T* y) const {
+ElementLoads<T> ForceElements::sforceLoads(int k, double t, const T* y,
+                                           const DynamicReads<T>* reads) const {
   const model::SForce& f = model_->sforces[k];
-  const T value = sforceValue(k, t, y);
+  const T value = sforceValue(k, t, y, reads);
   const MarkerState<T> fi = markerState(*model_, layout_, f.iMarker, y);
   const MarkerState<T> fj = markerState(*model_, layout_, f.jMarker, y);
   ElementLoads<T> l;
@@ -225,14 +229,15 @@ ElementLoads<T> ForceElements::linearFieldLoads(int k, const T* y) const {
 }
 
 template <class T>
-ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y) const {
+ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
+                                                const DynamicReads<T>* reads) const {
   const model::VectorForce& f = model_->vectorForces[k];
   const MarkerState<T> mi = markerState(*model_, layout_, f.iMarker, y);
   const M3<T> rm = markerState(*model_, layout_, f.rmMarker, y).a;
   T c[6];
   for (int n = 0; n < 6; ++n)
     c[n] = f.components[n] ? evaluateFunction(*model_, layout_, *f.components[n], t, y,
-                                              scratchValues_, scratchGrad_)
+                                              scratchValues_, scratchGrad_, reads)
                            : T(0.0);
   ElementLoads<T> l;
   l.hasForce = f.kind != model::VectorForce::Kind::VTorque;
@@ -248,12 +253,13 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y) con
 }
 
 template <class T>
-ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y) const {
+ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
+                                     const DynamicReads<T>* reads) const {
   switch (e.kind) {
-    case ForceElementKind::SForce: return sforceLoads(e.index, t, y);
+    case ForceElementKind::SForce: return sforceLoads(e.index, t, y, reads);
     case ForceElementKind::SpringDamper: return springDamperLoads(e.index, y);
     case ForceElementKind::LinearField: return linearFieldLoads(e.index, y);
-    case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y);
+    case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
   }
   return {};
 }
@@ -282,9 +288,10 @@ void ForceElements::applyToBody(int marker, const V3<T>& point, const V3<T>& for
 }
 
 template <class T>
-void ForceElements::addToResidual(double t, const T* y, T* g) const {
+void ForceElements::addToResidual(double t, const T* y, T* g,
+                                  const DynamicReads<T>* reads) const {
   for (const ForceElementRef& e : elements_) {
-    const ElementLoads<T> l = loads(e, t, y);
+    const ElementLoads<T> l = loads(e, t, y, reads);
     const int im = iMarker(e);
     const MarkerState<T> mi = markerState(*model_, layout_, im, y);
     applyToBody(im, mi.p, l.force, l.torque, l.hasForce, l.hasTorque, y, g);

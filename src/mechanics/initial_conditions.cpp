@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "common/rotation.hpp"
+#include "mechanics/coupled_accelerations.hpp"
 #include "mechanics/saddle_point_solver.hpp"
 #include "mechanics/sparse_constraint_jacobian.hpp"
 #include "mechanics/user_state_solve.hpp"
@@ -457,6 +458,10 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
 
 bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd& y,
                         Eigen::VectorXd& yp, LinearAlgebra method) {
+  // Functions that read accelerations or reactions couple Q to u' and lambda: one Newton
+  // solve of the force rows, C u' = gamma and the user rows together (docs/theory.md §4b).
+  if (readsAccelerationsOrReactions(system.model()))
+    return solveCoupledAccelerations(system, t, y, yp).converged;
   const StateLayout& l = system.layout();
   const int nb = l.bodies;
   // VARIABLE values and DIFF derivatives first: applied forces may read them (§4a).

@@ -1,6 +1,7 @@
 #include "mechanics/jacobian_pattern.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <numeric>
 
 #include "mechanics/multibody_system.hpp"
@@ -18,11 +19,24 @@ struct Dependencies {
 
 class PatternBuilder {
  public:
-  explicit PatternBuilder(const MultibodySystem& s)
-      : s_(s), m_(s.model()), l_(s.layout()), rows_(static_cast<size_t>(l_.size())),
+  // forceAndUserOnly: the rows of the force elements and user equations alone, unclaimed rows
+  // left empty (forceAndUserPattern).
+  explicit PatternBuilder(const MultibodySystem& s, bool forceAndUserOnly = false)
+      : forceAndUserOnly_(forceAndUserOnly), s_(s), m_(s.model()), l_(s.layout()), rows_(static_cast<size_t>(l_.size())),
         claimed_(static_cast<size_t>(l_.size()), false), dense_(static_cast<size_t>(l_.size()), false) {}
 
   std::vector<std::vector<int>> build() {
+    if (forceAndUserOnly_) {
+      forceElements();
+      userEquations();
+      const int n = l_.size();
+      for (int r = 0; r < n; ++r)
+        if (dense_[r]) {
+          rows_[r].resize(static_cast<size_t>(n));
+          std::iota(rows_[r].begin(), rows_[r].end(), 0);
+        }
+      return std::move(rows_);
+    }
     for (int b = 0; b < l_.bodies; ++b) bodyRows(b);
     forceElements();
     userEquations();
@@ -78,6 +92,14 @@ class PatternBuilder {
         return;
       case K::AryVal: {
         const model::DataArray& a = m_.arrays[ms.element];
+        if (a.gse >= 0) {  // a GSE's state or output: one column (none for discrete states)
+          const model::GeneralStateElement& e = m_.generalStates[a.gse];
+          if (a.kind == model::DataArray::Kind::Y)
+            d.columns.push_back(l_.userAlg(e.firstOutput + ms.component - 1));
+          else if (!a.discrete)
+            d.columns.push_back(l_.userDiff(e.firstState + ms.component - 1));
+          return;
+        }
         switch (a.kind) {
           case model::DataArray::Kind::X:
             d.columns.push_back(l_.userDiff(m_.linearStates[a.owner].firstState + ms.component - 1));
@@ -112,11 +134,39 @@ class PatternBuilder {
         addMarkerKinematics(d, ms.j);
         addMarkerKinematics(d, ms.k);
         return;
+      // Accelerations read y' of the same bodies' velocity entries: one column stands for
+      // y_c and y'_c, so the marker kinematics columns cover them (dynamic_measures.hpp).
+      case K::ACCX: case K::ACCY: case K::ACCZ: case K::ACCM:
+      case K::WDTX: case K::WDTY: case K::WDTZ: case K::WDTM:
+        addMarkerKinematics(d, ms.i);
+        addMarkerKinematics(d, ms.j);
+        addMarkerKinematics(d, ms.k);
+        return;
+      case K::JointForce: case K::MotionForce: case K::JPrimForce:
+        addReaction(d, ms);
+        return;
       default:
-        // Accelerations, reaction forces and any kind added later: not resolved here.
+        // Force read-backs and any kind added later: not resolved here.
         d.all = true;
         return;
     }
+  }
+  // JOINT, JPRIM, MOTION reactions: -C^T lambda of the element's equations on one marker's
+  // part, resolved in the k axes: their multipliers, the poses of every body those equations
+  // read, and the resolution marker (constraintElementReaction in dynamic_measures.hpp).
+  void addReaction(Dependencies& d, const model::Measure& ms) const {
+    using K = model::MeasureKind;
+    const auto& eqs = s_.constraints().equations();
+    for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
+      const ConstraintEquation& eq = eqs[k];
+      const bool mine = ms.kind == K::JointForce    ? eq.joint == ms.element
+                        : ms.kind == K::MotionForce ? eq.motion == ms.element
+                                                    : eq.jprim == ms.element;
+      if (!mine) continue;
+      d.columns.push_back(l_.lambda(k));
+      for (int s = 0; s < eq.markerCount(); ++s) addPose(d, bodyOfMarker(eq.marker(s)));
+    }
+    addMarkerKinematics(d, ms.k);
   }
   void addFunction(Dependencies& d, const model::BoundExpression& f) const {
     for (const model::Measure& ms : f.measures) addMeasure(d, ms);
@@ -219,6 +269,20 @@ class PatternBuilder {
         for (int v : m_.arrays[e.uArray].variables) addVariable(d, v);
       for (int i = 0; i < e.a.rows(); ++i) addRow(l_.userDiff(e.firstState + i), d);
     }
+    // GSE rows read its states and inputs (and an output row its own unknown).
+    for (int el = 0; el < static_cast<int>(m_.generalStates.size()); ++el) {
+      const model::GeneralStateElement& e = m_.generalStates[el];
+      Dependencies d;
+      for (int c = 0; c < e.ns; ++c) d.columns.push_back(l_.userDiff(e.firstState + c));
+      if (e.uArray >= 0)
+        for (int v : m_.arrays[e.uArray].variables) addVariable(d, v);
+      for (int i = 0; i < e.ns; ++i) addRow(l_.userDiff(e.firstState + i), d);
+      for (int j = 0; j < e.no; ++j) {
+        Dependencies dj = d;
+        dj.columns.push_back(l_.userAlg(e.firstOutput + j));
+        addRow(l_.userAlg(e.firstOutput + j), dj);
+      }
+    }
   }
 
   // Constraint k: its row reads the poses of its markers' bodies (and its own multiplier while
@@ -248,6 +312,7 @@ class PatternBuilder {
     }
   }
 
+  bool forceAndUserOnly_;
   const MultibodySystem& s_;
   const model::Model& m_;
   const StateLayout& l_;
@@ -269,8 +334,10 @@ Eigen::SparseMatrix<double> JacobianPattern::matrix() const {
 }
 
 JacobianPattern patternFromRows(int size, std::vector<std::vector<int>> rows) {
+  static std::atomic<std::uint64_t> patternsMade{0};
   JacobianPattern p;
   p.size = size;
+  p.stamp = ++patternsMade;
   std::vector<int> count(static_cast<size_t>(size) + 1, 0);
   for (int r = 0; r < size; ++r) {
     auto& row = rows[r];
@@ -291,6 +358,11 @@ JacobianPattern patternFromRows(int size, std::vector<std::vector<int>> rows) {
 
 JacobianPattern newtonMatrixPattern(const MultibodySystem& system) {
   PatternBuilder builder(system);
+  return patternFromRows(system.layout().size(), builder.build());
+}
+
+JacobianPattern forceAndUserPattern(const MultibodySystem& system) {
+  PatternBuilder builder(system, true);
   return patternFromRows(system.layout().size(), builder.build());
 }
 

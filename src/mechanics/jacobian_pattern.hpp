@@ -10,6 +10,8 @@
 // pattern can be too full but never too sparse. Columns of one colour share no row, so one
 // residual pass with all of them seeded yields every one of their entries.
 
+#include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <Eigen/SparseCore>
@@ -19,6 +21,7 @@
 namespace openmss::mechanics {
 
 class MultibodySystem;
+class LocalNewtonMatrix;
 
 struct JacobianPattern {
   int size = 0;
@@ -31,6 +34,9 @@ struct JacobianPattern {
   std::vector<int> colourColumns;
   // Rows made dense because a dependency could not be resolved structurally.
   int denseRows = 0;
+  // Distinct for every pattern made by patternFromRows (copies share it): what plans made on
+  // a pattern (local_newton_matrix.hpp) check before they reuse their value indices.
+  std::uint64_t stamp = 0;
 
   int colours() const { return static_cast<int>(colourStart.size()) - 1; }
   int nonZeros() const { return static_cast<int>(rowIndex.size()); }
@@ -43,6 +49,10 @@ JacobianPattern patternFromRows(int size, std::vector<std::vector<int>> rows);
 
 // The structural pattern of the system's Newton matrix, coloured.
 JacobianPattern newtonMatrixPattern(const MultibodySystem& system);
+// The part of it that the force elements and the user equations make (rows they write,
+// columns those rows read; other rows empty), coloured: what the element-local Newton matrix
+// still fills by compressed AD.
+JacobianPattern forceAndUserPattern(const MultibodySystem& system);
 
 // Greedy distance-2 colouring of the columns in ascending order (deterministic): two columns
 // that share a row get different colours.
@@ -56,6 +66,10 @@ void makeRowsDense(JacobianPattern& pattern, const std::vector<int>& rows);
 struct SparseJacobianWork {
   std::vector<Dual<double>> y, yp, g;
   std::vector<double> direction, product, magnitude;
+  // The element-local assembly planned on the pattern last used (local_newton_matrix.hpp);
+  // elementLocal = false forces the compressed colouring of the whole residual (tests, bench).
+  std::shared_ptr<LocalNewtonMatrix> local;
+  bool elementLocal = true;
 };
 
 }  // namespace openmss::mechanics

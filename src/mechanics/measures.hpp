@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "common/rotation.hpp"
+#include "mechanics/orientation_measure.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/analysis_status_measures.hpp"
 #include "mechanics/user_measures.hpp"
@@ -76,22 +77,8 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
       *out = acosOf(dot(a, b) / (norm(a) * norm(b)));
       return true;
     }
-    case K::Orient: {
-      if constexpr (std::is_same_v<T, double>) {
-        const M3<T> r = j.a.transpose() * i.a;
-        const Eigen::Vector4d q = quaternionFromMatrix(toEigen(r));
-        if (ms.code == 27) {
-          *out = q(ms.component - 1);
-          return true;
-        }
-        int a = 0, b = 0, c = 0;
-        if (orientSequence(ms.code, &a, &b, &c)) {
-          *out = bodyFixedAngles(toEigen(r), a, b, c)(ms.component - 1);
-          return true;
-        }
-      }
-      return false;
-    }
+    case K::Orient:  // on any scalar, so force functions get its derivatives
+      return orientValue(j.a.transpose() * i.a, ms.code, ms.component, out);
     default:
       return false;
   }

@@ -5,6 +5,7 @@
 #include <numbers>
 
 #include "common/rotation.hpp"
+#include "mechanics/local_newton_matrix.hpp"
 #include "mechanics/motion_profile.hpp"
 
 namespace openmss::mechanics {
@@ -92,8 +93,17 @@ void MultibodySystem::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
                                          SparseJacobianWork& work) const {
   using D = Dual<double>;
   const int n = layout_.size();
-  seedValues(y, yp, work);
   double* values = jac.valuePtr();
+  if (work.elementLocal) {
+    // Element by element (local_newton_matrix.hpp), planned once per pattern.
+    if (!work.local || work.local->patternStamp() != pattern.stamp)
+      work.local = std::make_shared<LocalNewtonMatrix>(*this, pattern);
+    if (work.local->usable()) {
+      work.local->assemble(t, y, yp, cj, values, work);
+      return;
+    }
+  }
+  seedValues(y, yp, work);
   for (int colour = 0; colour < pattern.colours(); ++colour) {
     const int first = pattern.colourStart[colour], last = pattern.colourStart[colour + 1];
     // Direction: the sum of e_c over the colour's columns (and cj e_c in y'). No row reads two
@@ -231,8 +241,9 @@ void MultibodySystem::constraintRowEntries(const ConstraintEquation& eq, const d
     if (body < 0) continue;
     const int slot = 6 * static_cast<int>(std::find(bodies, bodies + count, body) - bodies);
     const BodyPose<double> pose = bodyPose(layout_, body, y);
-    for (int dir = 0; dir < 6; ++dir)
-      vals[slot + dir] = vals[slot + dir] + virtualDerivative(eq, frames, side, dir, pose.r, pose.a);
+    double d[6];
+    sideGradient(eq, frames, side, pose.r, pose.a, d);
+    for (int dir = 0; dir < 6; ++dir) vals[slot + dir] = vals[slot + dir] + d[dir];
   }
 }
 
@@ -329,12 +340,13 @@ void MultibodySystem::reactionOf(Pick take, int marker, const double* y, Eigen::
     equationFrames(eq, y, frames);
     for (int side = 0; side < eq.markerCount(); ++side) {
       if (eq.marker(side) != marker) continue;
+      double dphi[6];
+      sideGradient(eq, frames, side, o, am, dphi);
       for (int dir = 0; dir < 6; ++dir) {
         // The constraint force on the part is -C^T lambda; torques in part axes about its
         // origin.
-        const double dphi = virtualDerivative(eq, frames, side, dir, o, am);
-        if (dir < 3) force(dir) -= dphi * lambda;
-        else torque(dir - 3) -= dphi * lambda;
+        if (dir < 3) force(dir) -= dphi[dir] * lambda;
+        else torque(dir - 3) -= dphi[dir] * lambda;
       }
     }
   }

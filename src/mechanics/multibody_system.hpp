@@ -5,6 +5,7 @@
 // Everything is templated on the scalar; exact Jacobians come from forward-mode AD.
 
 #include <cmath>
+#include <cstdint>
 #include <utility>
 #include <vector>
 
@@ -108,6 +109,47 @@ class MultibodySystem {
   // Every applied force element (SFORCE, SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE,
   // GFORCE): their loads and read-back (mechanics/force_elements.hpp).
   const ForceElements& forceElements() const { return forces_; }
+  // The residual rows of the force elements and the user equations alone (everything the
+  // element-local Newton matrix, local_newton_matrix.hpp, leaves to compressed AD); g must be
+  // zero on entry.
+  template <class T>
+  void forceAndUserResidual(double t, const T* y, const T* yp, T* g) const {
+    // As residual(): functions may read accelerations and reactions (dynamic_measures.hpp).
+    const DynamicReads<T> reads{yp, &constraints_};
+    forces_.addToResidual(t, y, g, &reads);
+    user_.addToResidual(t, y, yp, g, &constraints_);
+  }
+  // True for the equation kinds whose constraint force has an analytic gradient here (Point,
+  // Dot, Along, MotionTranslation); the others differentiate their geometry per direction.
+  static bool hasAnalyticGradient(const ConstraintEquation& eq) {
+    using K = ConstraintEquation::Kind;
+    return eq.kind == K::Point || eq.kind == K::Dot || eq.kind == K::Along ||
+           eq.kind == K::MotionTranslation;
+  }
+  // The geometry of an equation of those kinds (ConstraintSet::geometry, written again only so
+  // that it instantiates on any scalar, e.g. the multi-direction duals of the local Newton
+  // matrix).
+  template <class T>
+  static T analyticGeometry(const ConstraintEquation& eq, const Frame<T>* frames);
+  // dPhi/d(virtual displacement of the part carrying eq.marker(side)): out[0..2] translation
+  // along ground axes, out[3..5] rotation about the part's own axes (origin, axes: the part's
+  // frame). Analytic for those kinds: with g_p = dPhi/dp and g_a[r] = dPhi/d(axis r) of the
+  // marker, out = (g_p, (A^T (p - o)) x (A^T g_p) + sum_r (A^T a_r) x (A^T g_a[r])), which is the
+  // virtual-displacement derivative below written out (equal for any A, orthogonal or not).
+  template <class T>
+  static void analyticSideGradient(const ConstraintEquation& eq, const Frame<T>* frames, int side,
+                                   const V3<T>& origin, const M3<T>& axes, T* out);
+  // The same for every kind (the others through virtualDerivative); T = double or Dual<double>.
+  template <class T>
+  static void sideGradient(const ConstraintEquation& eq, const Frame<T>* frames, int side,
+                           const V3<T>& origin, const M3<T>& axes, T* out) {
+    if (hasAnalyticGradient(eq)) {
+      analyticSideGradient(eq, frames, side, origin, axes, out);
+      return;
+    }
+    for (int dir = 0; dir < 6; ++dir)
+      out[dir] = virtualDerivative(eq, frames, side, dir, origin, axes);
+  }
   // The user equations (VARIABLE, DIFF, LSE, TFSISO): STATIC_HOLD flags, initial values.
   const UserEquations& userEquations() const { return user_; }
   // Sum of the force elements acting on `marker` (as I, or as J / JFLOAT), restricted to those
@@ -124,9 +166,26 @@ class MultibodySystem {
   void equationFrames(const ConstraintEquation& eq, const T* y, Frame<T>* out) const {
     for (int s = 0; s < eq.markerCount(); ++s) out[s] = frame(eq.marker(s), y);
   }
+  // Body poses and marker frames of one residual evaluation, each computed at most once per
+  // call (stamped with the call's number): one scratch per scalar type and thread, so nothing
+  // is allocated after the first call and the residual stays re-entrant across threads.
   template <class T>
-  void addConstraintForce(const ConstraintEquation& eq, const T* y, const T& lambda,
-                          T* g) const;
+  struct KinematicsScratch {
+    std::uint64_t stamp = 0;
+    std::vector<std::uint64_t> bodyStamp, markerStamp;
+    std::vector<V3<T>> origin;
+    std::vector<M3<T>> axes;
+    std::vector<Frame<T>> frames;
+  };
+  template <class T>
+  KinematicsScratch<T>& beginKinematics() const;
+  template <class T>
+  void cachedBody(KinematicsScratch<T>& k, int body, const T* y) const;
+  template <class T>
+  const Frame<T>& cachedFrame(KinematicsScratch<T>& k, int marker, const T* y) const;
+  template <class T>
+  void addConstraintForce(const ConstraintEquation& eq, const Frame<T>* frames,
+                          KinematicsScratch<T>& k, const T* y, const T& lambda, T* g) const;
   // d(geometry of eq)/d(virtual displacement `dir` of the part that carries marker `side`
   // (eq.marker(side); 0 = I, 1 = J)): dir 0-2 translate along ground axes, 3-5 turn about the
   // part's own axes. `origin` and `axes` are that part's frame; `frames` the marker frames.
@@ -191,19 +250,115 @@ T MultibodySystem::virtualDerivative(const ConstraintEquation& eq, const Frame<T
 }
 
 template <class T>
-void MultibodySystem::addConstraintForce(const ConstraintEquation& eq, const T* y,
-                                         const T& lambda, T* g) const {
-  Frame<T> frames[ConstraintEquation::kMaxMarkers];
-  equationFrames(eq, y, frames);
+MultibodySystem::KinematicsScratch<T>& MultibodySystem::beginKinematics() const {
+  thread_local KinematicsScratch<T> k;
+  k.bodyStamp.resize(static_cast<size_t>(layout_.bodies), 0);
+  k.markerStamp.resize(model_->markers.size(), 0);
+  k.origin.resize(static_cast<size_t>(layout_.bodies));
+  k.axes.resize(static_cast<size_t>(layout_.bodies));
+  k.frames.resize(model_->markers.size());
+  ++k.stamp;
+  return k;
+}
+
+template <class T>
+void MultibodySystem::cachedBody(KinematicsScratch<T>& k, int body, const T* y) const {
+  if (k.bodyStamp[body] == k.stamp) return;
+  const T* q = y + layout_.body(body);
+  k.origin[body] = {q[StateLayout::kR], q[StateLayout::kR + 1], q[StateLayout::kR + 2]};
+  k.axes[body] = rotationOf(Quat<T>{q[StateLayout::kE], q[StateLayout::kE + 1],
+                                    q[StateLayout::kE + 2], q[StateLayout::kE + 3]});
+  k.bodyStamp[body] = k.stamp;
+}
+
+template <class T>
+const Frame<T>& MultibodySystem::cachedFrame(KinematicsScratch<T>& k, int marker,
+                                             const T* y) const {
+  Frame<T>& f = k.frames[marker];
+  if (k.markerStamp[marker] == k.stamp) return f;
+  const model::Marker& mk = model_->markers[marker];
+  const int body = model_->parts[mk.part].body;
+  const V3<T> sb = V3<T>::from(mk.position);
+  const M3<T> ab = M3<T>::from(mk.orientation);
+  if (body < 0) {
+    f = {sb, ab};
+  } else {
+    // As markerState (pose.hpp), operation for operation.
+    cachedBody(k, body, y);
+    f.p = k.origin[body] + k.axes[body] * sb;
+    f.a = k.axes[body] * ab;
+  }
+  k.markerStamp[marker] = k.stamp;
+  return f;
+}
+
+template <class T>
+T MultibodySystem::analyticGeometry(const ConstraintEquation& eq, const Frame<T>* frames) {
+  using K = ConstraintEquation::Kind;
+  const Frame<T>& i = frames[0];
+  const Frame<T>& j = frames[1];
+  if (eq.kind == K::Point) return (i.p - j.p)[eq.axisJ];
+  if (eq.kind == K::Dot) return dot(i.a.c[eq.axisI], j.a.c[eq.axisJ]);
+  return dot(j.a.c[eq.axisJ], i.p - j.p);  // Along, MotionTranslation
+}
+
+template <class T>
+void MultibodySystem::analyticSideGradient(const ConstraintEquation& eq, const Frame<T>* frames,
+                                           int side, const V3<T>& origin, const M3<T>& axes,
+                                           T* out) {
+  using K = ConstraintEquation::Kind;
+  const Frame<T>& f = frames[side];
+  V3<T> torque;
+  switch (eq.kind) {
+    case K::Point: {
+      // g_p = +-e_axis: A^T g_p is +- row `axis` of A.
+      const int c = eq.axisJ;
+      const double sign = side == 0 ? 1.0 : -1.0;
+      const V3<T> gpBody(sign * axes.c[0][c], sign * axes.c[1][c], sign * axes.c[2][c]);
+      for (int d = 0; d < 3; ++d) out[d] = T(d == c ? sign : 0.0);
+      torque = cross(axes.tmul(f.p - origin), gpBody);
+      break;
+    }
+    case K::Dot: {
+      // g_a[axisI] of I = axis axisJ of J and the other way round; no g_p.
+      const V3<T>& own = side == 0 ? f.a.c[eq.axisI] : f.a.c[eq.axisJ];
+      const V3<T>& other = side == 0 ? frames[1].a.c[eq.axisJ] : frames[0].a.c[eq.axisI];
+      for (int d = 0; d < 3; ++d) out[d] = T(0.0);
+      torque = cross(axes.tmul(own), axes.tmul(other));
+      break;
+    }
+    default: {  // Along, MotionTranslation: z . (P_I - P_J), z = axis axisJ of J
+      const V3<T>& z = frames[1].a.c[eq.axisJ];
+      const V3<T> zBody = axes.tmul(z);
+      const V3<T> arm = axes.tmul(f.p - origin);
+      if (side == 0) {
+        for (int d = 0; d < 3; ++d) out[d] = z[d];
+        torque = cross(arm, zBody);
+      } else {
+        // g_p = -z; g_a[axisJ] = P_I - P_J.
+        for (int d = 0; d < 3; ++d) out[d] = -z[d];
+        torque = cross(zBody, arm) + cross(zBody, axes.tmul(frames[0].p - f.p));
+      }
+      break;
+    }
+  }
+  for (int d = 0; d < 3; ++d) out[3 + d] = torque[d];
+}
+
+template <class T>
+void MultibodySystem::addConstraintForce(const ConstraintEquation& eq, const Frame<T>* frames,
+                                         KinematicsScratch<T>& k, const T* y, const T& lambda,
+                                         T* g) const {
   for (int side = 0; side < eq.markerCount(); ++side) {
     const int body = model_->parts[model_->markers[eq.marker(side)].part].body;
     if (body < 0) continue;
-    const BodyPose<T> pose = bodyPose(layout_, body, y);
-    for (int dir = 0; dir < 6; ++dir) {
-      const T d = virtualDerivative(eq, frames, side, dir, pose.r, pose.a);
-      const int row = layout_.body(body) +
-                      (dir < 3 ? StateLayout::kV + dir : StateLayout::kW + dir - 3);
-      g[row] = g[row] + d * lambda;
+    cachedBody(k, body, y);
+    T d[6];
+    sideGradient(eq, frames, side, k.origin[body], k.axes[body], d);
+    const int o = layout_.body(body);
+    for (int dir = 0; dir < 3; ++dir) {
+      g[o + StateLayout::kV + dir] = g[o + StateLayout::kV + dir] + d[dir] * lambda;
+      g[o + StateLayout::kW + dir] = g[o + StateLayout::kW + dir] + d[3 + dir] * lambda;
     }
   }
 }
@@ -258,9 +413,12 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
     for (int c = 0; c < 3; ++c) r[StateLayout::kW + c] = jwdot[c] + gyro[c];
     r[StateLayout::kMu] = e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3 - 1.0;
   }
-  addSForces(t, y, g);
-  user_.addToResidual(t, y, yp, g);
+  // Functions may read accelerations (y') and reactions (multipliers): dynamic_measures.hpp.
+  const DynamicReads<T> reads{yp, &constraints_};
+  forces_.addToResidual(t, y, g, &reads);
+  user_.addToResidual(t, y, yp, g, &constraints_);
   const auto& eqs = constraints_.equations();
+  KinematicsScratch<T>& kin = beginKinematics<T>();
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
     const ConstraintEquation& eq = eqs[k];
     const T& lambda = y[layout_.lambda(k)];
@@ -269,9 +427,9 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
       row = lambda;
       continue;
     }
-    addConstraintForce(eq, y, lambda, g);
     Frame<T> frames[ConstraintEquation::kMaxMarkers];
-    equationFrames(eq, y, frames);
+    for (int s = 0; s < eq.markerCount(); ++s) frames[s] = cachedFrame(kin, eq.marker(s), y);
+    addConstraintForce(eq, frames, kin, y, lambda, g);
     T value = ConstraintSet::geometry(eq, frames);
     if (eq.motion >= 0) {
       const double target = motionJet(k, t).value;

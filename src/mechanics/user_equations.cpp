@@ -7,6 +7,8 @@ std::vector<bool> UserEquations::staticHold() const {
   for (const model::Diff& d : model_->diffs) held.push_back(d.staticHold);
   for (const model::LinearStateElement& e : model_->linearStates)
     for (int i = 0; i < e.a.rows(); ++i) held.push_back(e.staticHold);
+  for (const model::GeneralStateElement& e : model_->generalStates)
+    for (int i = 0; i < e.ns; ++i) held.push_back(e.staticHold);
   return held;
 }
 
@@ -21,6 +23,12 @@ void UserEquations::initialValues(double* y) const {
   for (const model::LinearStateElement& e : m.linearStates)
     for (int i = 0; i < e.a.rows(); ++i)
       y[layout_.userDiff(e.firstState + i)] = i < e.ic.size() ? e.ic(i) : 0.0;
+  for (const model::GeneralStateElement& e : m.generalStates) {
+    for (int i = 0; i < e.ns; ++i) y[layout_.userDiff(e.firstState + i)] = e.ic(i);
+    for (int j = 0; j < e.no; ++j) y[layout_.userAlg(e.firstOutput + j)] = 0.0;  // solved
+    e.discrete.assign(e.icd.data(), e.icd.data() + e.icd.size());
+    e.lastSample = 0.0;
+  }
 }
 
 }  // namespace openmss::mechanics

@@ -7,6 +7,7 @@
 //   DIFF k:          y_k' - z_k = 0                                     (differential)
 //                    z_k - f_k(y, t) = 0      or, IMPLICIT, f_k(y, t) = 0 (algebraic)
 //   LSE / TFSISO:    x' - (A x + B u) = 0                               (differential)
+//   GSE:             x' - f(x, xd, u, t) = 0, y - g(x, xd, u, t) = 0    (general_state_rows.hpp)
 //
 // z_k is DIF1(k): an algebraic unknown equal to y_k', so that every function (and every
 // output) reads y_k' from the state vector alone.
@@ -14,6 +15,7 @@
 #include <vector>
 
 #include "mechanics/bound_function.hpp"
+#include "mechanics/general_state_rows.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
 
@@ -21,37 +23,49 @@ namespace openmss::mechanics {
 
 class UserEquations {
  public:
-  explicit UserEquations(const model::Model& model) : model_(&model) {}
+  explicit UserEquations(const model::Model& model) : model_(&model), gse_(model) {}
   // The owner's layout (user blocks must be set).
-  void setLayout(const StateLayout& layout) { layout_ = layout; }
+  void setLayout(const StateLayout& layout) {
+    layout_ = layout;
+    gse_.setLayout(layout);
+  }
+  const GeneralStateRows& generalStates() const { return gse_; }
 
+  // `constraints` lets functions read reactions (JOINT, MOTION, JPRIM); y' gives accelerations.
   template <class T>
-  void addToResidual(double t, const T* y, const T* yp, T* g) const;
+  void addToResidual(double t, const T* y, const T* yp, T* g,
+                     const ConstraintSet* constraints = nullptr) const;
 
   // User differential states (index among them) that STATIC_HOLD keeps fixed in statics.
   std::vector<bool> staticHold() const;
-  // Initial values: DIFF IC (and IC derivative guess), LSE IC, VARIABLE IC (guess).
+  // Initial values: DIFF IC (and IC derivative guess), LSE IC, VARIABLE IC (guess), GSE IC
+  // (and its discrete states back to ICD).
   void initialValues(double* y) const;
 
  private:
   const model::Model* model_;
   StateLayout layout_;
+  GeneralStateRows gse_;
   mutable std::vector<double> scratchValues_, scratchGrad_;
 };
 
 template <class T>
-void UserEquations::addToResidual(double t, const T* y, const T* yp, T* g) const {
+void UserEquations::addToResidual(double t, const T* y, const T* yp, T* g,
+                                  const ConstraintSet* constraints) const {
   const model::Model& m = *model_;
   const StateLayout& l = layout_;
+  const DynamicReads<T> reads{yp, constraints};
   const int nv = static_cast<int>(m.variables.size());
   for (int k = 0; k < nv; ++k) {
-    const T f = evaluateFunction(m, l, m.variables[k].function, t, y, scratchValues_, scratchGrad_);
+    const T f = evaluateFunction(m, l, m.variables[k].function, t, y, scratchValues_,
+                                 scratchGrad_, &reads);
     g[l.userAlg(k)] = y[l.userAlg(k)] - f;
   }
   for (int k = 0; k < static_cast<int>(m.diffs.size()); ++k) {
     const int state = l.userDiff(k), rate = l.userAlg(nv + k);
     g[state] = yp[state] - y[rate];
-    const T f = evaluateFunction(m, l, m.diffs[k].function, t, y, scratchValues_, scratchGrad_);
+    const T f = evaluateFunction(m, l, m.diffs[k].function, t, y, scratchValues_, scratchGrad_,
+                                 &reads);
     g[rate] = m.diffs[k].implicit ? f : y[rate] - f;
   }
   for (const model::LinearStateElement& e : m.linearStates) {
@@ -67,6 +81,7 @@ void UserEquations::addToResidual(double t, const T* y, const T* yp, T* g) const
       g[row] = yp[row] - rhs;
     }
   }
+  gse_.addToResidual(t, y, yp, g);
 }
 
 }  // namespace openmss::mechanics

@@ -32,6 +32,12 @@ T linearStateOutput(const model::Model& m, const StateLayout& l, int e, int row,
 template <class T>
 T arrayValue(const model::Model& m, const StateLayout& l, int k, int n, const T* y) {
   const model::DataArray& a = m.arrays[k];
+  if (a.gse >= 0) {  // a GSE's states (XD: discrete, constant between samples) or outputs
+    const model::GeneralStateElement& e = m.generalStates[a.gse];
+    if (a.kind == model::DataArray::Kind::Y) return y[l.userAlg(e.firstOutput + n)];
+    if (a.discrete) return T(e.discrete[n]);
+    return y[l.userDiff(e.firstState + n)];
+  }
   switch (a.kind) {
     case model::DataArray::Kind::X:
       return y[l.userDiff(m.linearStates[a.owner].firstState + n)];

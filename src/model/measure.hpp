@@ -39,6 +39,21 @@ enum class MeasureKind {
   AnalysisMode, StepSize, IntegratorOrder, JacobianCount, ResidualCount,
 };
 
+// Accelerations and the reactions of joints, joint primitives and motions: force, VARIABLE and
+// DIFF functions may read them (they are y' and multipliers of the DAE state;
+// mechanics/dynamic_measures.hpp). Read-backs of force elements and FX..TM may not yet.
+inline bool readsAccelerationOrReaction(MeasureKind kind) {
+  switch (kind) {
+    case MeasureKind::ACCX: case MeasureKind::ACCY: case MeasureKind::ACCZ:
+    case MeasureKind::ACCM: case MeasureKind::WDTX: case MeasureKind::WDTY:
+    case MeasureKind::WDTZ: case MeasureKind::WDTM: case MeasureKind::JointForce:
+    case MeasureKind::MotionForce: case MeasureKind::JPrimForce:
+      return true;
+    default:
+      return false;
+  }
+}
+
 struct Measure {
   MeasureKind kind = MeasureKind::Time;
   int i = -1;  // marker index

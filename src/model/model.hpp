@@ -19,6 +19,7 @@
 #include "model/analysis_settings.hpp"
 #include "model/analysis_status.hpp"
 #include "model/measure.hpp"
+#include "user/gse_routines.hpp"
 
 namespace openmss::model {
 
@@ -235,6 +236,10 @@ struct DataArray {
   std::vector<double> numbers; // IC and constants
   int size = 0;
   int owner = -1;              // X and Y: index into Model::linearStates
+  // X and Y of a GSE instead (owner stays -1): index into Model::generalStates; `discrete`
+  // for its XD array (the discrete states).
+  int gse = -1;
+  bool discrete = false;
   SourceLocation where;
 };
 
@@ -249,6 +254,27 @@ struct LinearStateElement {
   Eigen::VectorXd ic;          // initial states (zero unless LSE IC=)
   bool staticHold = false;
   int firstState = -1;  // index of x(1) among the user differential states (after the DIFFs)
+  SourceLocation where;
+};
+
+// GSE (docs/theory.md, "GSE"): x' = f(x, xd, u, t), y = g(x, xd, u, t) from user-written
+// routines (user/gse_routines.hpp); xd = h(x, xd, u, t) at sample times, constant between.
+// The x are user differential states, the y user algebraic unknowns; xd lives here.
+struct GeneralStateElement {
+  long id = 0;
+  int ns = 0, nd = 0, ni = 0, no = 0;
+  int xArray = -1, xdArray = -1, uArray = -1, yArray = -1;  // indices into Model::arrays
+  Eigen::VectorXd ic, icd;  // initial continuous and discrete states (zero unless IC=, ICD=)
+  bool staticHold = false;
+  std::optional<expr::Expression> samplePeriod;  // SAMPLE_PERIOD (a function of TIME)
+  std::shared_ptr<const user::GseRoutines> routines;
+  int firstState = -1;   // index of x(1) among the user differential states (after LSEs)
+  int firstOutput = -1;  // index of y(1) among the user algebraic unknowns (after DIFFs)
+  // The discrete states and the time of the last sample: run-time values written only by
+  // the analysis at sample times (analysis/discrete_sampler.hpp), hence mutable in the
+  // otherwise fixed model, as Sensor::evaluatedValue.
+  mutable std::vector<double> discrete;
+  mutable double lastSample = 0.0;
   SourceLocation where;
 };
 
@@ -354,6 +380,7 @@ struct Model {
   std::vector<Diff> diffs;
   std::vector<DataArray> arrays;
   std::vector<LinearStateElement> linearStates;
+  std::vector<GeneralStateElement> generalStates;  // GSE
   std::vector<PlantVariables> pinputs, poutputs;
   std::vector<Request> requests;
   std::vector<Sensor> sensors;  // SENVAL(id) measures index this list
@@ -381,13 +408,19 @@ struct Model {
 
   int bodyCount() const { return static_cast<int>(movingParts.size()); }
   // User states (mechanics/state_layout.hpp): differential ones are the DIFF states, then the
-  // states of each LSE/TFSISO; algebraic ones the VARIABLEs, then each DIFF's derivative.
+  // states of each LSE/TFSISO, then of each GSE; algebraic ones the VARIABLEs, then each
+  // DIFF's derivative, then each GSE's outputs.
   int userDifferentialCount() const {
     int n = static_cast<int>(diffs.size());
     for (const auto& e : linearStates) n += static_cast<int>(e.a.rows());
+    for (const auto& e : generalStates) n += e.ns;  // GSE states after them
     return n;
   }
-  int userAlgebraicCount() const { return static_cast<int>(variables.size() + diffs.size()); }
+  int userAlgebraicCount() const {
+    int n = static_cast<int>(variables.size() + diffs.size());
+    for (const auto& e : generalStates) n += e.no;  // GSE outputs after the DIFF derivatives
+    return n;
+  }
 };
 
 }  // namespace openmss::model

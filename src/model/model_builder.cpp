@@ -161,7 +161,7 @@ const std::set<std::string>& supportedStatements() {
                                           "GCON",
                                           // user equations (user_equation_builder.cpp)
                                           "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO",
-                                          "PINPUT", "POUTPUT",
+                                          "PINPUT", "POUTPUT", "GSE",
                                           // integrator diagnostics (DEBUG/EPRINT)
                                           "DEBUG",
                                           // events (sensor_builder.cpp)
@@ -208,6 +208,17 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
                     BoundExpression& out, bool forConstraint, bool forRequest) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
   if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
+  if (const expr::UserCall* user = out.expression.userCall()) {
+    // USER(...) keeps its constants (expr4); evaluating it needs a loaded subroutine.
+    SourceLocation at = where;
+    if (where.column > 0) at.column = where.column + user->column - 1;
+    diags.error(at, subject,
+                "USER(...) at column " + std::to_string(user->column) +
+                    " of the expression needs a user subroutine, and none is loaded for it",
+                "Write the function as an expression, or load the subroutine library that "
+                "defines it (ROUTINE=).");
+    return false;
+  }
   bool ok = true;
   out.measures.clear();
   for (const auto& call : out.expression.hostCalls()) {
@@ -277,12 +288,14 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       m.i = marker(2, false);
       m.j = marker(3, true);
       const bool known = (m.code == 27 && m.component >= 1 && m.component <= 4) ||
-                         (m.code >= 1 && m.code <= 10 && m.component >= 1 && m.component <= 3);
+                         (m.code >= 1 && m.code <= 26 && m.component >= 1 && m.component <= 3);
       if (!known)
         fail("orientation code " + std::to_string(m.code) + " component " +
                  std::to_string(m.component) + " is not supported yet",
-             "Use codes 1-10 (body-fixed sequences 1-2-3, 2-3-1, 3-1-2, 1-3-2, 2-1-3, 3-2-1, "
-             "1-2-1, 1-3-1, 2-1-2, 2-3-2; components 1-3) or 27 (Euler parameters, 1-4).");
+             "Use codes 1-12 (body-fixed sequences 1-2-3, 2-3-1, 3-1-2, 1-3-2, 2-1-3, 3-2-1, "
+             "1-2-1, 1-3-1, 2-1-2, 2-3-2, 3-1-3, 3-2-3), 13-24 (the same sequences space-fixed), "
+             "25 (AX, AY, AZ principal values), 26 (YAW, PITCH, ROLL), all with components 1-3, "
+             "or 27 (Euler parameters, 1-4).");
     } else if (call.name == "INCANG") {
       m.kind = MeasureKind::IncludedAngle;
       m.i = marker(0, false);
@@ -335,15 +348,28 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       // SENVAL (sensor_builder.cpp)
     } else if (bindAnalysisVariable(call.name, forRequest, m, fail)) {
       // MODE, HSIZE, ORDER, NJAC, NRHS; CPU refused (model/analysis_status.hpp)
+    } else if (call.name == "NFORCE" || call.name == "PTCV" || call.name == "CVCV" ||
+               call.name == "FRICTION" || call.name == "CONTACT") {
+      // Read-backs of elements the solver rejects at input (expr4): name the missing element.
+      const long eid = call.args.empty() ? 0 : call.args[0];
+      fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
+               " elements are not supported by the solver (their statements are rejected at "
+               "input), so there is no force to read",
+           "Remove the " + call.name + " read-back, or model the element with SFORCE, VFORCE or "
+           "GFORCE and read that element instead.");
+      continue;
     } else {
       fail("this function is not supported yet by the solver",
            "Remove it or replace it by a supported function; see README.md for the list.");
       continue;
     }
-    if (forForces && (m.needsDynamics() || m.kind == MeasureKind::Orient))
-      fail("functions of accelerations, reaction forces or ORIENT are not supported yet in "
-           "force functions",
-           "Use it in a REQUEST, or express the force through displacements and velocities.");
+    // Accelerations, JOINT/JPRIM/MOTION reactions and ORIENT are read in force and VARIABLE
+    // functions (docs/theory.md §4b); read-backs of force elements and FX..TM not yet.
+    if (forForces && m.needsDynamics() && !readsAccelerationOrReaction(m.kind))
+      fail("force read-backs (SFORCE, SPDP, BUSH, FIELD, BEAM, VFORCE, VTORQ, GFORCE, FX..TM) "
+           "are not supported yet in force, VARIABLE or DIFF functions",
+           "Use it in a REQUEST; JOINT, JPRIM and MOTION reactions and accelerations are "
+           "supported here.");
     out.measures.push_back(m);
   }
   return ok;
@@ -369,10 +395,6 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
 
   for (const Statement& s : dataset.statements) {
     Args a(s, diags);
-    if (s.name == "GSE") {  // user subroutines only (sensor_builder.cpp)
-      rejectGeneralStateEquation(s, diags);
-      continue;
-    }
     if (!supportedStatements().count(s.name) && !isDataElementStatement(s.name)) {
       diags.error(s.where, s.subject(), s.name + " is not supported yet by the solver",
                   "Remove the statement, or run it with a tool that supports it; README.md "

@@ -140,14 +140,4 @@ bool bindSensorMeasure(const Model& model, const expr::HostCall& call, Measure& 
   return true;
 }
 
-void rejectGeneralStateEquation(const Statement& s, Diagnostics& diags) {
-  diags.error(s.where, s.subject(),
-              "GSE is not supported: ADAMS takes its equations only from user-written "
-              "subroutines (GSE_DERIV, GSE_OUTPUT, GSE_UPDATE, GSE_SAMP, or GSESUB with "
-              "GSEXX/GSEXU/GSEYX/GSEYU), and OpenMSS does not load user subroutines",
-              "Write linear state equations as LSE (or TFSISO for one input and one output), "
-              "nonlinear ones as DIFF states with VARIABLE inputs and outputs, read with DIF(id) "
-              "and VARVAL(id); docs/language.md, \"GSE\".");
-}
-
 }  // namespace openmss::model

@@ -1,7 +1,6 @@
 #pragma once
 // Dataset -> Model for SENSOR statements (docs/theory.md, "Sensors"), the binding of
-// SENVAL(id), and the diagnostic for GSE, whose equations ADAMS takes only from user-written
-// subroutines.
+// SENVAL(id). (GSE, once rejected here, is built in model/user_equation_builder.cpp.)
 
 #include <string>
 
@@ -22,8 +21,5 @@ void bindSensorFunctions(const language::Dataset& dataset, Model& model, Diagnos
 // SENVAL(id): fills `m` and returns true when `call` is SENVAL (calling `fail` for a wrong id).
 bool bindSensorMeasure(const Model& model, const expr::HostCall& call, Measure& m,
                        const BindFailure& fail);
-
-// GSE: always an error (the reason and the alternatives are in the message).
-void rejectGeneralStateEquation(const language::Statement& s, Diagnostics& diags);
 
 }  // namespace openmss::model

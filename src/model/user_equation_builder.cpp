@@ -1,11 +1,13 @@
 #include "model/user_equation_builder.hpp"
 
 #include <cmath>
+#include <filesystem>
 #include <map>
 #include <optional>
 #include <set>
 
 #include "model/model_builder.hpp"
+#include "model/user_subroutine_arguments.hpp"
 
 namespace openmss::model {
 namespace {
@@ -232,12 +234,14 @@ class Builder {
       ok = false;
       return -1;
     }
-    if ((kind == DataArray::Kind::X || kind == DataArray::Kind::Y) && a.owner >= 0) {
+    if ((kind == DataArray::Kind::X || kind == DataArray::Kind::Y) &&
+        (a.owner >= 0 || a.gse >= 0)) {
       diags_.error(arg->where, s.subject(),
                    "ARRAY/" + std::to_string(*id) + " already holds the " +
                        (kind == DataArray::Kind::X ? "states" : "outputs") + " of " +
-                       elementName(model_.linearStates[a.owner]),
-                   "Give each LSE/TFSISO its own " + arrayKindName(kind) + " array.");
+                       (a.owner >= 0 ? elementName(model_.linearStates[a.owner])
+                                     : "GSE/" + std::to_string(model_.generalStates[a.gse].id)),
+                   "Give each LSE/TFSISO/GSE its own " + arrayKindName(kind) + " array.");
       ok = false;
       return -1;
     }
@@ -447,6 +451,144 @@ class Builder {
     model_.linearStates.push_back(e);
   }
 
+  // GSE (docs/theory.md, "GSE"): sizes from NS/ND/NO and the arrays, the routines from a
+  // user library (user/loaded_gse_routines.hpp). Every independent problem is reported.
+  void gse(const Statement& s, const std::string& baseDirectory) {
+    GeneralStateElement e;
+    e.id = *s.id;
+    e.where = s.where;
+    e.staticHold = s.has("STATIC_HOLD");
+    bool ok = true;
+    if (const Argument* a = s.find("IMPLICIT")) {
+      diags_.error(a->where, s.subject(),
+                   "IMPLICIT GSEs (GSE_DERIV returning residuals) are not supported",
+                   "Write the routine in explicit form (it returns x'), and drop IMPLICIT.");
+      ok = false;
+    }
+    const long ns = positiveInteger(s, "NS", diags_, true).value_or(0);
+    const long nd = positiveInteger(s, "ND", diags_, true).value_or(0);
+    const long no = positiveInteger(s, "NO", diags_, true).value_or(0);
+    e.ns = static_cast<int>(ns);
+    e.nd = static_cast<int>(nd);
+    e.no = static_cast<int>(no);
+    // A count and its array go together: ADAMS reads the states and outputs through them.
+    auto counted = [&](const char* count, long n, const char* arrayArg, DataArray::Kind kind) {
+      const bool has = s.has(arrayArg);
+      if (n > 0 && !has) {
+        diags_.error(s.where, s.subject(),
+                     std::string(count) + "=" + std::to_string(n) + " needs " + arrayArg + "=",
+                     std::string("Add ") + arrayArg + "=<id of an ARRAY/" + arrayKindName(kind) +
+                         " of SIZE " + std::to_string(n) + ">.");
+        ok = false;
+        return -1;
+      }
+      const int index = arrayRef(s, arrayArg, kind, false, ok);
+      if (index >= 0 && n == 0) {
+        diags_.error(s.find(arrayArg)->where, s.subject(),
+                     std::string(arrayArg) + "= needs " + count + "= (the number of entries)",
+                     std::string("Add ") + count + "=<count>.");
+        ok = false;
+        return -1;
+      }
+      if (index >= 0 && !claimSize(s, arrayArg, index, n)) ok = false;
+      return index;
+    };
+    e.xArray = counted("NS", ns, "X", DataArray::Kind::X);
+    e.xdArray = counted("ND", nd, "XD", DataArray::Kind::X);
+    e.yArray = counted("NO", no, "Y", DataArray::Kind::Y);
+    e.uArray = arrayRef(s, "U", DataArray::Kind::U, false, ok);
+    if (e.uArray >= 0) e.ni = model_.arrays[e.uArray].size;
+    if (ns + nd + no == 0) {
+      diags_.error(s.where, s.subject(), "the GSE has no states and no outputs",
+                   "Give NS= (continuous states), ND= (discrete states) or NO= (outputs).");
+      ok = false;
+    }
+    auto initial = [&](const char* name, long n, Eigen::VectorXd& out) {
+      out = Eigen::VectorXd::Zero(n);
+      const int index = arrayRef(s, name, DataArray::Kind::IC, false, ok);
+      if (index < 0) return;
+      const DataArray& ic = model_.arrays[index];
+      if (ic.size != n) {
+        diags_.error(s.find(name)->where, s.subject(),
+                     "ARRAY/" + std::to_string(ic.id) + " has " + std::to_string(ic.size) +
+                         " numbers; the GSE has " + std::to_string(n) +
+                         (std::string(name) == "IC" ? " continuous" : " discrete") + " states",
+                     "Give one initial value per state.");
+        ok = false;
+        return;
+      }
+      for (long i = 0; i < n; ++i) out(i) = ic.numbers[static_cast<size_t>(i)];
+    };
+    initial("IC", ns, e.ic);
+    initial("ICD", nd, e.icd);
+    if (const Argument* sp = s.find("SAMPLE_PERIOD")) {
+      expr::Expression period;
+      if (!expr::Expression::parse(sp->expression, sp->valueWhere, s.subject(), diags_, period)) {
+        ok = false;
+      } else if (!period.hostCalls().empty()) {
+        diags_.error(sp->valueWhere, s.subject(),
+                     "SAMPLE_PERIOD may depend on TIME only (it is evaluated at each sample)",
+                     "Write the period as a constant or a function of TIME.");
+        ok = false;
+      } else {
+        e.samplePeriod = std::move(period);
+      }
+      if (nd == 0)
+        diags_.warning(sp->where, s.subject(),
+                       "SAMPLE_PERIOD has no effect without discrete states (ND=0)",
+                       "Remove SAMPLE_PERIOD, or add ND= and XD=.");
+    }
+    const auto par = userParameters(s, diags_);
+    if (!par) ok = false;
+    const user::GseRoutineNames names = gseRoutineNames(s, diags_, ok);
+    if (!ok) return;
+    user::GseDescription d;
+    d.id = e.id;
+    d.par = *par;
+    d.ns = e.ns;
+    d.nd = e.nd;
+    d.ni = e.ni;
+    d.no = e.no;
+    auto idOf = [&](int index) { return index >= 0 ? model_.arrays[index].id : 0L; };
+    d.xArray = idOf(e.xArray);
+    d.xdArray = idOf(e.xdArray);
+    d.uArray = idOf(e.uArray);
+    d.yArray = idOf(e.yArray);
+    if (const auto ic = positiveInteger(s, "IC", diags_)) d.icArray = *ic;
+    if (const auto icd = positiveInteger(s, "ICD", diags_)) d.icdArray = *icd;
+    d.staticHold = e.staticHold;
+    for (const DataArray& a : model_.arrays)
+      if (a.kind == DataArray::Kind::IC || a.kind == DataArray::Kind::Constants)
+        d.constantArrays.push_back({a.id, a.numbers});
+    std::vector<std::string> problems;
+    e.routines = user::loadGseRoutines(d, names, baseDirectory, problems);
+    for (const std::string& p : problems) {
+      const Argument* at = s.find("INTERFACE") ? s.find("INTERFACE") : s.find("ROUTINE");
+      diags_.error(at ? at->where : s.where, s.subject(), p,
+                   "Build the library with the routines (extern \"C\", signatures of "
+                   "src/user/openmss_usersub.h) and name it with INTERFACE=lib::name, "
+                   "ROUTINE=lib:: or `openmss run --user-library PATH`; docs/language.md, "
+                   "\"GSE\".");
+    }
+    if (!e.routines) return;
+    if (nd > 0 && !e.samplePeriod && !e.routines->sampleStep(0.0)) {
+      diags_.error(s.where, s.subject(),
+                   "discrete states (ND=" + std::to_string(nd) +
+                       ") need a sample period: neither SAMPLE_PERIOD= nor a GSE_SAMP routine "
+                       "gives one",
+                   "Add SAMPLE_PERIOD=<time>, or export Gse_sample from the library.");
+      return;
+    }
+    for (const auto& o : model_.generalStates)
+      if (o.id == e.id) return;
+    const int index = toInt(model_.generalStates.size());
+    for (int a : {e.xArray, e.xdArray, e.yArray})
+      if (a >= 0) model_.arrays[a].gse = index;
+    if (e.xdArray >= 0) model_.arrays[e.xdArray].discrete = true;
+    e.discrete.assign(e.icd.data(), e.icd.data() + e.icd.size());
+    model_.generalStates.push_back(std::move(e));
+  }
+
   // After every element: state offsets, and X/Y arrays nobody owns.
   void finish() {
     int next = toInt(model_.diffs.size());
@@ -454,14 +596,22 @@ class Builder {
       e.firstState = next;
       next += static_cast<int>(e.a.rows());
     }
+    int nextOutput = toInt(model_.variables.size() + model_.diffs.size());
+    for (auto& e : model_.generalStates) {  // after the LSE/TFSISO states, DIFF derivatives
+      e.firstState = next;
+      next += e.ns;
+      e.firstOutput = nextOutput;
+      nextOutput += e.no;
+    }
     for (int k = 0; k < toInt(model_.arrays.size()); ++k) {
       const DataArray& a = model_.arrays[static_cast<size_t>(k)];
       if ((a.kind == DataArray::Kind::X || a.kind == DataArray::Kind::Y) && a.owner < 0 &&
-          !referenced_.count(k))
+          a.gse < 0 && !referenced_.count(k))
         diags_.error(a.where, "ARRAY/" + std::to_string(a.id),
                      "this " + arrayKindName(a.kind) +
-                         " array belongs to no LSE or TFSISO, so it has no values",
-                     "Name it in an LSE or TFSISO (" + arrayKindName(a.kind) + "=), or remove it.");
+                         " array belongs to no LSE, TFSISO or GSE, so it has no values",
+                     "Name it in an LSE, TFSISO or GSE (" + arrayKindName(a.kind) +
+                         "=), or remove it.");
     }
   }
 
@@ -477,12 +627,14 @@ class Builder {
 
 bool isUserEquationStatement(const std::string& name) {
   return name == "VARIABLE" || name == "DIFF" || name == "ARRAY" || name == "LSE" ||
-         name == "TFSISO" || name == "PINPUT" || name == "POUTPUT";
+         name == "TFSISO" || name == "PINPUT" || name == "POUTPUT" || name == "GSE";
 }
 
 void buildUserEquations(const std::vector<const Statement*>& statements,
                         const language::Dataset& dataset, Model& model, Diagnostics& diags) {
-  (void)dataset;  // MATRIX statements come through Model::matrices
+  // MATRIX statements come through Model::matrices; user libraries are found next to the file.
+  const std::string baseDirectory =
+      std::filesystem::path(dataset.file).parent_path().string();
   Builder b(model, diags);
   // Referenced elements first: VARIABLEs (U arrays, PINPUT/POUTPUT), then arrays, then the
   // elements that own arrays.
@@ -501,6 +653,7 @@ void buildUserEquations(const std::vector<const Statement*>& statements,
     if (!s->id) continue;
     if (s->name == "LSE") b.lse(*s);
     if (s->name == "TFSISO") b.tfsiso(*s);
+    if (s->name == "GSE") b.gse(*s, baseDirectory.empty() ? "." : baseDirectory);
   }
   b.finish();
 }

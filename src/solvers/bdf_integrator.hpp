@@ -72,7 +72,11 @@ class BdfIntegrator final : public Integrator {
 
  private:
   bool attemptStep(double h, int k, bool* newtonFailed, double* errorNorm);
-  double weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& ref, bool errorOnly) const;
+  // Largest |v_i| w_i: the weighted maximum norm for the weights w (errorWeight_ or
+  // correctorWeight_). NaN when v holds a NaN or an infinity anywhere (0 * inf is NaN): a
+  // non-finite unknown fails the attempt.
+  static double weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w);
+  void setWeights();
   void noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy);
   double orderErrorEstimate(int q, double h) const;
 
@@ -98,6 +102,14 @@ class BdfIntegrator final : public Integrator {
   DenseLinearSolver dense_;
   KluLinearSolver klu_;
   LinearSolver* solver_ = &dense_;
+  // Per-unknown masks fixed at start(): 1 where the unknown is under error control / has a
+  // derivative in G (velocities of an index-3 problem have one but no error control).
+  Eigen::VectorXd errorMask_, differentialMask_;
+  Eigen::VectorXi rowExponent_, unknownExponent_;
+  // Inverse tolerance weights of the current step, 1 / (ERROR (1 + |y_n,i|)), masked: for the
+  // error test (error-controlled unknowns) and for the corrector's convergence test.
+  Eigen::VectorXd errorWeight_, correctorWeight_;
+  int consecutiveErrorFailures_ = 0;
   mutable std::vector<Eigen::VectorXd> divided_;  // orderErrorEstimate's work vectors
   std::vector<Eigen::VectorXd> equallySpaced_;     // fixed-coefficient history (GSTIFF)
   Eigen::VectorXd rowScale_, colScale_;

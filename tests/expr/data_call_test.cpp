@@ -90,10 +90,8 @@ TEST(DataCalls, BadArgumentsAreReported) {
        "but AKISPL takes 3 "
        "to 4. Write AKISPL(x, z, id[, iord])."},
       {"INTERP(TIME, 1)",
-       "test.adm:7:20: error: VARIABLE/1: INTERP at column 1 of the expression is not supported "
-       "yet. This function "
-       "is not available to expressions yet; see docs/expressions.md for the functions "
-       "available."},
+       "test.adm:7:20: error: VARIABLE/1: INTERP at column 1 of the expression has 2 arguments, "
+       "but INTERP takes 3 to 4. Write INTERP(x, degree, id[, iord])."},
   };
   for (const auto& c : cases) {
     Diagnostics diags;

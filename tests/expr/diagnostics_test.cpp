@@ -112,17 +112,13 @@ TEST(ExpressionDiagnostics, HostCallArgumentsMustBeIntegerConstants) {
             "model.adm:12:23: error: SFORCE/104: DX argument 1 at column 4 of the expression ");
 }
 
-TEST(ExpressionDiagnostics, ModelDataFunctionsAreNotSupportedYet) {
-  // AKISPL, CUBSPL and CURVE are supported (data_call_test.cpp); INTERP's definition is unknown.
-  EXPECT_EQ(errorOf("2*INTERP(TIME, 0, 1)"),
-            "model.adm:12:22: error: SFORCE/104: INTERP at column 3 of the expression is not "
-            "supported yet. This function is not available to expressions yet; see "
-            "docs/expressions.md for the functions available.");
-  EXPECT_EQ(errorOf("USER(1.05, 0.005, 0.5)"),
-            "model.adm:12:20: error: SFORCE/104: USER at column 1 of the expression is not "
-            "supported yet. User subroutines are not available yet; write the force as an "
-            "expression.");
-  for (const char* name : {"INTERP", "DELAY", "INVPSD", "AO"}) {
+TEST(ExpressionDiagnostics, FunctionsStillNotSupported) {
+  // DELAY needs run history; AO's definition was not found (docs/expressions.md).
+  EXPECT_EQ(errorOf("2*DELAY(TIME, 1, 0)"),
+            "model.adm:12:22: error: SFORCE/104: DELAY at column 3 of the expression is not "
+            "supported yet. DELAY needs the history of its argument over the run, which "
+            "expressions cannot keep yet; model the delay with a DIFF (e.g. a Pade approximant).");
+  for (const char* name : {"AO", "FXFREQ", "FXMODE"}) {
     const std::string message = errorOf(std::string(name) + "(1, 2)");
     EXPECT_NE(message.find(std::string(name) + " at column 1 of the expression is not "
                                                "supported yet"),
@@ -131,17 +127,41 @@ TEST(ExpressionDiagnostics, ModelDataFunctionsAreNotSupportedYet) {
   }
 }
 
-TEST(ExpressionDiagnostics, VectorsAreNotSupportedYet) {
-  EXPECT_EQ(errorOf("MAG(DXYZ(1,2))"),
-            "model.adm:12:20: error: SFORCE/104: vector expressions are not supported yet: MAG "
-            "at column 1 of the expression. Write the scalar components instead (DX, DY, DZ, "
-            "VX, ...).");
-  EXPECT_EQ(errorOf("[1, 2, 3]").substr(0, 91),
-            "model.adm:12:20: error: SFORCE/104: vector expressions are not supported yet: '[' "
-            "at column");
-  EXPECT_EQ(errorOf("DX(1)%DX(2)").substr(0, 93),
-            "model.adm:12:25: error: SFORCE/104: vector expressions are not supported yet: '%' "
-            "at column 6");
+TEST(ExpressionDiagnostics, VectorMisuse) {
+  EXPECT_EQ(errorOf("DXYZ(1,2)"),
+            "model.adm:12:20: error: SFORCE/104: the expression is a vector at column 1 of the "
+            "expression, but a function must be a scalar. Reduce it to a scalar with MAG(v), a "
+            "dot product v*w, or a component function (DX, VX, ...).");
+  EXPECT_EQ(errorOf("UVX(1)").substr(0, 94),
+            "model.adm:12:20: error: SFORCE/104: vector function UVX at column 1 of the "
+            "expression is not s");
+  EXPECT_EQ(errorOf("DX(1)%DX(2)"),
+            "model.adm:12:25: error: SFORCE/104: '%' needs a vector on both sides at column 6 of "
+            "the expression. '%' is the cross product of two vectors; use '*' for scalars.");
+  EXPECT_EQ(errorOf("SIN(DXYZ(1))"),
+            "model.adm:12:24: error: SFORCE/104: SIN argument 1 at column 5 of the expression is "
+            "a vector, but SIN takes scalars. Pass a scalar: MAG(v), a dot product v*w, or a "
+            "component function.");
+  EXPECT_EQ(errorOf("MAG(DX(1))").substr(0, 104),
+            "model.adm:12:24: error: SFORCE/104: MAG argument 1 at column 5 of the expression is "
+            "a scalar, but MAG ta");
+  EXPECT_NE(errorOf("MAG(DXYZ(1.5))").find("DXYZ argument 1 at column 10 of the expression is "
+                                           "1.5, not an integer"),
+            std::string::npos);
+  EXPECT_NE(errorOf("1/[1,2,3]").find("'/' by a vector at column 2"), std::string::npos);
+  EXPECT_NE(errorOf("[1,2,3]**2").find("'**' with a vector operand"), std::string::npos);
+  EXPECT_NE(errorOf("TIME+[1,2,3]").find("'+' between a scalar and a vector"), std::string::npos);
+  EXPECT_NE(errorOf("MAG([1,2])").find("expected ','"), std::string::npos);
+}
+
+TEST(ExpressionDiagnostics, UserMustBeTheWholeConstantFunction) {
+  EXPECT_EQ(errorOf("2*USER(1.05, 0.005)"),
+            "model.adm:12:22: error: SFORCE/104: USER at column 3 of the expression must be the "
+            "whole function. Write FUNCTION=USER(r1, ..., r30) on its own; the subroutine "
+            "computes the value.");
+  EXPECT_NE(errorOf("USER(TIME)").find("USER argument 1 at column 6 of the expression must be a "
+                                       "constant"),
+            std::string::npos);
 }
 
 TEST(ExpressionDiagnostics, IfNeedsAColonAfterItsFirstArgument) {

@@ -43,6 +43,21 @@ TEST(Standalone, RefusesSplineFunctionsWithoutAModel) {
             "functions such as STEP or POLY.");
 }
 
+TEST(Standalone, RefusesUserAndEvaluatesVectors) {
+  Diagnostics diags;
+  EXPECT_FALSE(evaluateStandalone("USER(1, 2)", 0.0, nullptr, nullptr, diags));
+  ASSERT_EQ(diags.all().size(), 1u);
+  EXPECT_EQ(format(diags.all()[0]),
+            "<command line>: error: USER at column 1 of the expression needs a user subroutine, "
+            "and the calculator loads none. Use numbers, constants, TIME and functions such as "
+            "STEP or POLY.");
+  double value = 0.0, rate = 0.0;
+  Diagnostics ok;
+  ASSERT_TRUE(evaluateStandalone("MAG([3*TIME, 4, 12])", 1.0, &value, &rate, ok));
+  EXPECT_DOUBLE_EQ(value, 13.0);
+  EXPECT_NEAR(rate, 9.0 / 13.0, 1e-15);  // d/dt sqrt(9t^2 + 160) = 9t / |v|
+}
+
 TEST(Standalone, ReportsSyntaxErrors) {
   Diagnostics diags;
   EXPECT_FALSE(evaluateStandalone("STEP (TIME,0,0,1,1)", 0.0, nullptr, nullptr, diags));

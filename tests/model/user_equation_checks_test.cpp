@@ -32,7 +32,7 @@ TEST(UserEquationChecks, EveryErrorIsReportedOnceWithItsLine) {
       "LSE/3, X=4, A=1\n"           // 15: A not square
       "PINPUT/1, VARIABLES=1, 5\n"  // 16: unknown VARIABLE
       "POUTPUT/2, VARIABLES=1\n"
-      "VARIABLE/2, FUNCTION=POUVAL(2, 2) + PINVAL(3, 1) + ACCX(10)\n"  // 18: three errors
+      "VARIABLE/2, FUNCTION=POUVAL(2, 2) + PINVAL(3, 1) + FX(10)\n"  // 18: three errors
       "END\n";
   Diagnostics diags;
   language::Dataset dataset;
@@ -54,13 +54,13 @@ TEST(UserEquationChecks, EveryErrorIsReportedOnceWithItsLine) {
       "u.adm:12:45: error: TFSISO/2: the last DENOMINATOR coefficient (highest power of s) is "
       "zero.",
       "u.adm:12:26: error: TFSISO/2: the NUMERATOR has more coefficients than the DENOMINATOR",
-      "u.adm:14:1: error: ARRAY/7: this Y array belongs to no LSE or TFSISO",
+      "u.adm:14:1: error: ARRAY/7: this Y array belongs to no LSE, TFSISO or GSE",
       "u.adm:15:13: error: LSE/3: A is 2x3 but must be 2x2 (A is square).",
       "u.adm:16:24: error: PINPUT/1: VARIABLE/5 does not exist.",
       "u.adm:18:22: error: VARIABLE/2: POUVAL: position 2 is outside POUTPUT/2 (it has 1 "
       "entries).",
       "u.adm:18:37: error: VARIABLE/2: PINVAL: PINPUT/3 does not exist.",
-      "u.adm:18:52: error: VARIABLE/2: ACCX: functions of accelerations",
+      "u.adm:18:52: error: VARIABLE/2: FX: force read-backs",
   };
   for (const auto& e : expected) EXPECT_NE(all.find(e), std::string::npos) << e << "\n" << all;
   EXPECT_EQ(diags.errorCount(), static_cast<int>(expected.size()) - 1) << all;

@@ -1,0 +1,165 @@
+#include "mechanics/coupled_accelerations.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+#include "common/dual.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "mechanics/user_state_solve.hpp"
+
+namespace openmss::mechanics {
+namespace {
+
+bool functionReads(const model::BoundExpression& f) {
+  return std::any_of(f.measures.begin(), f.measures.end(), [](const model::Measure& ms) {
+    return model::readsAccelerationOrReaction(ms.kind);
+  });
+}
+
+// y' of the kinematic rows (r' = v, e' = 1/2 e (x) (0, w)) for the current velocities, so that
+// the residual's kinematic rows vanish and only the unknown entries matter.
+void kinematicRates(const StateLayout& l, const Eigen::VectorXd& y, Eigen::VectorXd& yp) {
+  for (int b = 0; b < l.bodies; ++b) {
+    const int o = l.body(b);
+    const Eigen::Vector4d e = y.segment<4>(o + StateLayout::kE);
+    const Eigen::Vector3d w = y.segment<3>(o + StateLayout::kW);
+    yp.segment<3>(o + StateLayout::kR) = y.segment<3>(o + StateLayout::kV);
+    yp(o + StateLayout::kE + 0) = 0.5 * (-e(1) * w(0) - e(2) * w(1) - e(3) * w(2));
+    yp(o + StateLayout::kE + 1) = 0.5 * (e(0) * w(0) + e(2) * w(2) - e(3) * w(1));
+    yp(o + StateLayout::kE + 2) = 0.5 * (e(0) * w(1) + e(3) * w(0) - e(1) * w(2));
+    yp(o + StateLayout::kE + 3) = 0.5 * (e(0) * w(2) + e(1) * w(1) - e(2) * w(0));
+  }
+}
+
+}  // namespace
+
+bool readsAccelerationsOrReactions(const model::Model& m) {
+  for (const model::SForce& f : m.sforces)
+    if (functionReads(f.function)) return true;
+  for (const model::VectorForce& f : m.vectorForces)
+    for (const auto& c : f.components)
+      if (c && functionReads(*c)) return true;
+  for (const model::Variable& v : m.variables)
+    if (functionReads(v.function)) return true;
+  for (const model::Diff& d : m.diffs)
+    if (functionReads(d.function)) return true;
+  return false;
+}
+
+bool forceFunctionsReadReactions(const model::Model& m) {
+  auto reads = [](const model::BoundExpression& f) {
+    return std::any_of(f.measures.begin(), f.measures.end(), [](const model::Measure& ms) {
+      return ms.kind == model::MeasureKind::JointForce ||
+             ms.kind == model::MeasureKind::MotionForce ||
+             ms.kind == model::MeasureKind::JPrimForce;
+    });
+  };
+  for (const model::SForce& f : m.sforces)
+    if (reads(f.function)) return true;
+  for (const model::VectorForce& f : m.vectorForces)
+    for (const auto& c : f.components)
+      if (c && reads(*c)) return true;
+  return false;
+}
+
+CoupledAccelerationResult solveCoupledAccelerations(const MultibodySystem& system, double t,
+                                                    Eigen::VectorXd& y, Eigen::VectorXd& yp,
+                                                    int maxIterations) {
+  using D = Dual<double>;
+  const StateLayout& l = system.layout();
+  const int nb = l.bodies, n = l.size();
+  std::vector<int> rows;
+  const Eigen::MatrixXd c = activeConstraintJacobian(system, y.data(), &rows);
+  const int nc = static_cast<int>(rows.size()), na = l.userAlgebraic;
+  // Right-hand side of the acceleration-level constraints: f'' - (C' u) (as solveAccelerations).
+  Eigen::VectorXd gamma(nc);
+  for (int r = 0; r < nc; ++r) {
+    double first = 0.0, second = 0.0;
+    system.constraintRates(rows[r], y.data(), &first, &second);
+    const auto& eq = system.constraints().equations()[rows[r]];
+    gamma(r) = (eq.motion >= 0 ? system.motionJet(rows[r], t).d2 : 0.0) - second;
+  }
+  // Unknowns: v' and w' of every body (yp), the active multipliers and the user algebraic
+  // unknowns (y). `where` maps unknown u to its entry, `inYp` to which vector.
+  const int nu = 6 * nb + nc + na;
+  std::vector<int> where(static_cast<size_t>(nu));
+  std::vector<bool> inYp(static_cast<size_t>(nu), false);
+  for (int b = 0; b < nb; ++b)
+    for (int k = 0; k < 3; ++k) {
+      where[6 * b + k] = l.body(b) + StateLayout::kV + k;
+      where[6 * b + 3 + k] = l.body(b) + StateLayout::kW + k;
+      inYp[6 * b + k] = inYp[6 * b + 3 + k] = true;
+    }
+  for (int r = 0; r < nc; ++r) where[6 * nb + r] = l.lambda(rows[r]);
+  for (int k = 0; k < na; ++k) where[6 * nb + nc + k] = l.userAlg(k);
+  // Equations: the force and moment rows of every body, C u' = gamma, the user algebraic rows.
+  auto residualRow = [&](int e) {
+    const int body = e / 6, k = e % 6;
+    return l.body(body) + (k < 3 ? StateLayout::kV + k : StateLayout::kW + k - 3);
+  };
+
+  yp = Eigen::VectorXd::Zero(n);
+  kinematicRates(l, y, yp);
+  for (int k = 0; k < l.constraintEquations; ++k) y(l.lambda(k)) = 0.0;
+  for (int b = 0; b < nb; ++b) y(l.body(b) + StateLayout::kMu) = 0.0;
+
+  Eigen::VectorXd g(n), f(nu);
+  Eigen::MatrixXd jac = Eigen::MatrixXd::Zero(nu, nu);
+  std::vector<D> yd(static_cast<size_t>(n)), ypd(static_cast<size_t>(n)), gd(static_cast<size_t>(n));
+  auto unknownsOf = [&](int u) -> double& { return inYp[u] ? yp(where[u]) : y(where[u]); };
+  auto evaluate = [&]() {
+    g.setZero();
+    system.residual(t, y.data(), yp.data(), g.data());
+    for (int e = 0; e < 6 * nb; ++e) f(e) = g(residualRow(e));
+    Eigen::VectorXd accelerations(6 * nb);
+    for (int e = 0; e < 6 * nb; ++e) accelerations(e) = yp(where[e]);
+    if (nc > 0) f.segment(6 * nb, nc) = c * accelerations - gamma;
+    for (int k = 0; k < na; ++k) f(6 * nb + nc + k) = g(l.userAlg(k));
+  };
+  CoupledAccelerationResult result;
+  for (int it = 0; it < maxIterations; ++it) {
+    evaluate();
+    result.residual = f.size() > 0 ? f.cwiseAbs().maxCoeff() : 0.0;
+    if (!std::isfinite(result.residual)) return result;
+    // The exact Jacobian: one dual residual pass per unknown (the constraint rows are C).
+    for (int i = 0; i < n; ++i) {
+      yd[i] = D(y(i), 0.0);
+      ypd[i] = D(yp(i), 0.0);
+    }
+    jac.setZero();
+    for (int u = 0; u < nu; ++u) {
+      std::vector<D>& seeded = inYp[u] ? ypd : yd;
+      seeded[where[u]].d = 1.0;
+      std::fill(gd.begin(), gd.end(), D(0.0, 0.0));
+      system.residual(t, yd.data(), ypd.data(), gd.data());
+      for (int e = 0; e < 6 * nb; ++e) jac(e, u) = gd[residualRow(e)].d;
+      for (int k = 0; k < na; ++k) jac(6 * nb + nc + k, u) = gd[l.userAlg(k)].d;
+      seeded[where[u]].d = 0.0;
+    }
+    if (nc > 0) jac.block(6 * nb, 0, nc, 6 * nb) = c;
+    Eigen::FullPivLU<Eigen::MatrixXd> lu(jac);
+    if (!lu.isInvertible()) {
+      result.singular = true;
+      return result;
+    }
+    const Eigen::VectorXd delta = lu.solve(-f);
+    double size = 0.0;
+    for (int u = 0; u < nu; ++u) {
+      double& x = unknownsOf(u);
+      x += delta(u);
+      size = std::max(size, std::abs(delta(u)) / (1.0 + std::abs(x)));
+    }
+    result.iterations = it + 1;
+    if (size <= 1e-12) {
+      evaluate();
+      result.residual = f.size() > 0 ? f.cwiseAbs().maxCoeff() : 0.0;
+      result.converged = std::isfinite(result.residual);
+      break;
+    }
+  }
+  if (result.converged) userStateRates(system, t, y, yp);
+  return result;
+}
+
+}  // namespace openmss::mechanics

@@ -1,0 +1,203 @@
+#pragma once
+// Measures that read more than positions and velocities (docs/theory.md §4b): accelerations
+// (ACCX..ACCM, WDTX..WDTM), which are y' of the velocity entries of the DAE state, and the
+// reactions of joints, joint primitives and motions (JOINT, JPRIM, MOTION), which are linear in
+// the multipliers in y. Both are templated on the scalar like every other measure, so that a
+// force or VARIABLE function reading them puts its exact partials with respect to y' and the
+// multipliers into the Newton matrix dG/dy + cj dG/dy'.
+
+#include <cmath>
+
+#include "common/dual.hpp"
+#include "common/vec3.hpp"
+#include "mechanics/constraint_set.hpp"
+#include "mechanics/pose.hpp"
+#include "mechanics/state_layout.hpp"
+#include "model/measure.hpp"
+#include "model/model.hpp"
+
+namespace openmss::mechanics {
+
+// What the residual lends a function besides y: the state derivative y' (accelerations) and the
+// constraint equations (reactions from the multipliers in y). A null yp reads as zero
+// accelerations (statics); a null constraint set as zero reactions.
+template <class T>
+struct DynamicReads {
+  const T* yp = nullptr;
+  const ConstraintSet* constraints = nullptr;
+};
+
+// True for the measure kinds dynamicMeasure evaluates (the model builder allows the same).
+inline bool isDynamicMeasure(model::MeasureKind kind) {
+  return model::readsAccelerationOrReaction(kind);
+}
+
+// Acceleration of a marker's origin and angular acceleration of its part, ground axes:
+// p'' = v' + alpha x s + w x (w x s), alpha = A w_body' (s = the marker's offset from the CM).
+template <class T>
+void markerAcceleration(const model::Model& m, const StateLayout& l, int marker, const T* y,
+                        const T* yp, V3<T>& acceleration, V3<T>& alpha) {
+  acceleration = V3<T>(T(0.0), T(0.0), T(0.0));
+  alpha = acceleration;
+  if (marker < 0) return;
+  const int body = m.parts[m.markers[marker].part].body;
+  if (body < 0) return;
+  const BodyPose<T> pose = bodyPose(l, body, y);
+  const V3<T> s = pose.a * V3<T>::from(m.markers[marker].position);
+  const V3<T> centripetal = cross(pose.wg, cross(pose.wg, s));
+  if (yp == nullptr) {
+    acceleration = centripetal;
+    return;
+  }
+  const T* q = yp + l.body(body);
+  const V3<T> vdot(q[StateLayout::kV], q[StateLayout::kV + 1], q[StateLayout::kV + 2]);
+  const V3<T> wdot(q[StateLayout::kW], q[StateLayout::kW + 1], q[StateLayout::kW + 2]);
+  alpha = pose.a * wdot;
+  acceleration = vdot + cross(alpha, s) + centripetal;
+}
+
+// The derivative of equation eq's geometry along virtual displacement `dir` of the part that
+// carries marker slot `side` (0-2: translation along ground axes, 3-5: rotation about the part's
+// own axes; `origin`, `axes` that part's frame). The same construction as the residual's
+// constraint force -C^T lambda (MultibodySystem::virtualDerivative), so reactions read here are
+// the forces the residual applies.
+template <class T>
+T virtualGeometryDerivative(const ConstraintEquation& eq, const Frame<T>* frames, int side,
+                            int dir, const V3<T>& origin, const M3<T>& axes) {
+  using S = Dual<T>;
+  Frame<S> f[ConstraintEquation::kMaxMarkers];
+  for (int s = 0; s < eq.markerCount(); ++s)
+    for (int c = 0; c < 3; ++c) {
+      f[s].p[c] = S(frames[s].p[c], T(0.0));
+      for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(frames[s].a.c[r][c], T(0.0));
+    }
+  if (dir < 3) {
+    f[side].p[dir].d = T(1.0);
+  } else {
+    V3<T> ek(T(0.0), T(0.0), T(0.0));
+    ek[dir - 3] = T(1.0);
+    const V3<T> dp = axes * cross(ek, axes.tmul(frames[side].p - origin));
+    for (int c = 0; c < 3; ++c) f[side].p[c].d = dp[c];
+    for (int r = 0; r < 3; ++r) {
+      const V3<T> da = axes * cross(ek, axes.tmul(frames[side].a.c[r]));
+      for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da[c];
+    }
+  }
+  return ConstraintSet::geometry(eq, f).d;
+}
+
+// Force on the part of `marker` and torque about the marker's origin (ground axes) exerted by
+// the active equations of one joint, joint primitive or motion: -C^T lambda of those equations,
+// as MultibodySystem::elementReaction computes it for the outputs.
+template <class T>
+void constraintElementReaction(const model::Model& m, const StateLayout& l,
+                               const ConstraintSet& constraints, model::MeasureKind kind,
+                               int element, int marker, const T* y, V3<T>& force,
+                               V3<T>& torque) {
+  using K = model::MeasureKind;
+  const V3<T> zero(T(0.0), T(0.0), T(0.0));
+  force = zero;
+  V3<T> bodyTorque = zero;
+  const int body = m.parts[m.markers[marker].part].body;
+  V3<T> origin = zero;
+  M3<T> axes = M3<T>::from(Eigen::Matrix3d::Identity().eval());
+  if (body >= 0) {
+    const BodyPose<T> pose = bodyPose(l, body, y);
+    origin = pose.r;
+    axes = pose.a;
+  }
+  const auto& eqs = constraints.equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
+    const ConstraintEquation& eq = eqs[k];
+    const bool mine = kind == K::JointForce    ? eq.joint == element
+                      : kind == K::MotionForce ? eq.motion == element
+                                               : eq.jprim == element;
+    if (!eq.active || !mine) continue;
+    const T& lambda = y[l.lambda(k)];
+    Frame<T> frames[ConstraintEquation::kMaxMarkers];
+    for (int s = 0; s < eq.markerCount(); ++s) {
+      const MarkerState<T> ms = markerState(m, l, eq.marker(s), y);
+      frames[s] = {ms.p, ms.a};
+    }
+    for (int side = 0; side < eq.markerCount(); ++side) {
+      if (eq.marker(side) != marker) continue;
+      for (int dir = 0; dir < 6; ++dir) {
+        const T d = virtualGeometryDerivative(eq, frames, side, dir, origin, axes);
+        if (dir < 3) force[dir] = force[dir] - d * lambda;
+        else bodyTorque[dir - 3] = bodyTorque[dir - 3] - d * lambda;
+      }
+    }
+  }
+  const V3<T> pm = markerState(m, l, marker, y).p;
+  torque = axes * bodyTorque - cross(pm - origin, force);
+}
+
+// |a| with a zero derivative at a = 0 (a reaction that vanishes has no direction).
+template <class T>
+T magnitudeOf(const V3<T>& a) {
+  const T squared = dot(a, a);
+  if (valueOf(squared) == 0.0) return T(0.0);
+  return sqrtOf(squared);
+}
+
+// Value of an acceleration or reaction measure; false for any other kind.
+template <class T>
+bool dynamicMeasure(const model::Model& m, const StateLayout& l, const model::Measure& ms,
+                    const T* y, const DynamicReads<T>* reads, T* out) {
+  using K = model::MeasureKind;
+  if (!isDynamicMeasure(ms.kind)) return false;
+  const M3<T> k = ms.k >= 0 ? markerState(m, l, ms.k, y).a
+                            : M3<T>::from(Eigen::Matrix3d::Identity().eval());
+  const T* yp = reads != nullptr ? reads->yp : nullptr;
+  V3<T> ai, alphai, aj, alphaj;
+  switch (ms.kind) {
+    case K::ACCX: case K::ACCY: case K::ACCZ: case K::ACCM:
+    case K::WDTX: case K::WDTY: case K::WDTZ: case K::WDTM: {
+      // Time derivatives in ground: relative accelerations are plain differences.
+      markerAcceleration(m, l, ms.i, y, yp, ai, alphai);
+      markerAcceleration(m, l, ms.j, y, yp, aj, alphaj);
+      const V3<T> acc = ai - aj, wdt = alphai - alphaj;
+      switch (ms.kind) {
+        case K::ACCX: *out = dot(acc, k.c[0]); break;
+        case K::ACCY: *out = dot(acc, k.c[1]); break;
+        case K::ACCZ: *out = dot(acc, k.c[2]); break;
+        case K::ACCM: *out = magnitudeOf(acc); break;
+        case K::WDTX: *out = dot(wdt, k.c[0]); break;
+        case K::WDTY: *out = dot(wdt, k.c[1]); break;
+        case K::WDTZ: *out = dot(wdt, k.c[2]); break;
+        default: *out = magnitudeOf(wdt); break;
+      }
+      return true;
+    }
+    default:
+      break;
+  }
+  // JOINT, JPRIM, MOTION (id, jflag, comp, rm): at the element's I or J marker.
+  if (reads == nullptr || reads->constraints == nullptr) {
+    *out = T(0.0);
+    return true;
+  }
+  int iMarker = -1, jMarker = -1;
+  if (ms.kind == K::JointForce) {
+    iMarker = m.joints[ms.element].iMarker;
+    jMarker = m.joints[ms.element].jMarker;
+  } else if (ms.kind == K::MotionForce) {
+    iMarker = m.motions[ms.element].iMarker;
+    jMarker = m.motions[ms.element].jMarker;
+  } else {
+    iMarker = m.jprims[ms.element].iMarker;
+    jMarker = m.jprims[ms.element].jMarker;
+  }
+  V3<T> force, torque;
+  constraintElementReaction(m, l, *reads->constraints, ms.kind, ms.element,
+                            ms.atJ == 1 ? jMarker : iMarker, y, force, torque);
+  switch (ms.component) {
+    case 1: *out = magnitudeOf(force); break;
+    case 2: case 3: case 4: *out = dot(force, k.c[ms.component - 2]); break;
+    case 5: *out = magnitudeOf(torque); break;
+    default: *out = dot(torque, k.c[ms.component - 6]); break;
+  }
+  return true;
+}
+
+}  // namespace openmss::mechanics

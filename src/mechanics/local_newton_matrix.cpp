@@ -1,0 +1,377 @@
+#include "mechanics/local_newton_matrix.hpp"
+
+#include <algorithm>
+#include <type_traits>
+
+#include "mechanics/multibody_system.hpp"
+
+namespace openmss::mechanics {
+namespace {
+
+using L = StateLayout;
+
+// The equations with analytic gradients go through all the 7 positions of up to two bodies in
+// one pass; the others one direction at a time with Dual<double> (their geometry is written
+// for double, Dual and Dual<Dual> only).
+using Multi = DualVec<LocalNewtonMatrix::kChunk>;
+
+template <class S>
+struct Seeds;
+template <int N>
+struct Seeds<DualVec<N>> {
+  static constexpr int count = N;
+  static double& at(DualVec<N>& x, int k) { return x.d[k]; }
+  static double get(const DualVec<N>& x, int k) { return x.d[k]; }
+  static double value(const DualVec<N>& x) { return x.v; }
+};
+template <>
+struct Seeds<Dual<double>> {
+  static constexpr int count = 1;
+  static double& at(Dual<double>& x, int) { return x.d; }
+  static double get(const Dual<double>& x, int) { return x.d; }
+  static double value(const Dual<double>& x) { return x.v; }
+};
+
+// The body entries in a fixed order (row offset, column offset within the body's 14): the
+// kinematic rows (r' - v), the Euler-parameter rows (e, w, mu), the mass and inertia rows,
+// the normalisation row.
+template <class Visit>
+void forEachBodyEntry(Visit visit) {
+  for (int c = 0; c < 3; ++c) {
+    visit(L::kR + c, L::kR + c);
+    visit(L::kR + c, L::kV + c);
+  }
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) visit(L::kE + r, L::kE + c);
+    for (int c = 0; c < 3; ++c) visit(L::kE + r, L::kW + c);
+    visit(L::kE + r, L::kMu);
+  }
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) visit(L::kV + r, L::kV + c);
+  for (int r = 0; r < 3; ++r)
+    for (int c = 0; c < 3; ++c) visit(L::kW + r, L::kW + c);
+  for (int c = 0; c < 4; ++c) visit(L::kMu, L::kE + c);
+}
+
+}  // namespace
+
+LocalNewtonMatrix::LocalNewtonMatrix(const MultibodySystem& system,
+                                     const JacobianPattern& pattern)
+    : system_(system), patternStamp_(pattern.stamp), nonZeros_(pattern.nonZeros()) {
+  // Dense rows (a repair, or a dependency the pattern rules could not resolve) mean some
+  // contribution is not known element by element: colour the whole residual instead.
+  usable_ = pattern.denseRows == 0 && pattern.size == system.layout().size();
+  if (usable_) planBodies(pattern);
+  if (usable_) planEquations(pattern);
+  if (usable_) planForceAndUser(pattern);
+}
+
+int LocalNewtonMatrix::find(const JacobianPattern& p, int row, int column) {
+  const auto first = p.rowIndex.begin() + p.columnStart[column];
+  const auto last = p.rowIndex.begin() + p.columnStart[column + 1];
+  const auto it = std::lower_bound(first, last, row);
+  if (it == last || *it != row) return -1;
+  return static_cast<int>(it - p.rowIndex.begin());
+}
+
+void LocalNewtonMatrix::planBodies(const JacobianPattern& p) {
+  const StateLayout& l = system_.layout();
+  bodyIndex_.reserve(static_cast<size_t>(kBodyEntries * l.bodies));
+  for (int b = 0; b < l.bodies; ++b)
+    forEachBodyEntry([&](int r, int c) {
+      const int k = find(p, l.body(b) + r, l.body(b) + c);
+      if (k < 0) usable_ = false;
+      bodyIndex_.push_back(k);
+    });
+}
+
+void LocalNewtonMatrix::planEquations(const JacobianPattern& p) {
+  const StateLayout& l = system_.layout();
+  const model::Model& m = system_.model();
+  const auto& eqs = system_.constraints().equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()) && usable_; ++k) {
+    const ConstraintEquation& eq = eqs[k];
+    if (eq.kind == ConstraintEquation::Kind::General || eq.markerCount() > 6) {
+      usable_ = false;  // reads marker measures through an expression: not planned here
+      return;
+    }
+    EquationPlan plan;
+    for (int side = 0; side < eq.markerCount(); ++side) {
+      const int body = m.parts[m.markers[eq.marker(side)].part].body;
+      if (body >= 0 && std::find(plan.bodies, plan.bodies + plan.bodyCount, body) ==
+                           plan.bodies + plan.bodyCount)
+        plan.bodies[plan.bodyCount++] = body;
+    }
+    for (int i = 1; i < plan.bodyCount; ++i)
+      for (int j = i; j > 0 && plan.bodies[j - 1] > plan.bodies[j]; --j)
+        std::swap(plan.bodies[j - 1], plan.bodies[j]);
+    for (int side = 0; side < eq.markerCount(); ++side) {
+      const int body = m.parts[m.markers[eq.marker(side)].part].body;
+      plan.slot[side] = body < 0 ? -1
+                                 : static_cast<int>(std::find(plan.bodies,
+                                                              plan.bodies + plan.bodyCount, body) -
+                                                    plan.bodies);
+    }
+    plan.index = static_cast<int>(index_.size());
+    const int lambda = l.lambda(k);
+    const int n = plan.bodyCount;
+    auto column = [&](int j) { return l.body(plan.bodies[j / 7]) + j % 7; };  // r then e
+    auto add = [&](int row, int col) {
+      const int v = find(p, row, col);
+      if (v < 0) usable_ = false;
+      index_.push_back(v);
+    };
+    add(lambda, lambda);
+    for (int j = 0; j < 7 * n; ++j) add(lambda, column(j));
+    for (int i = 0; i < n; ++i)
+      for (int r = 0; r < 6; ++r) {
+        const int row = l.body(plan.bodies[i]) + (r < 3 ? L::kV + r : L::kW + r - 3);
+        for (int j = 0; j < 7 * n; ++j) add(row, column(j));
+        add(row, lambda);
+      }
+    equations_.push_back(plan);
+  }
+}
+
+void LocalNewtonMatrix::planForceAndUser(const JacobianPattern& p) {
+  forceAndUser_ = forceAndUserPattern(system_);
+  if (forceAndUser_.denseRows > 0) {
+    usable_ = false;
+    return;
+  }
+  const int n = forceAndUser_.size;
+  std::vector<bool> written(static_cast<size_t>(n), false);
+  forceAndUserIndex_.resize(forceAndUser_.rowIndex.size());
+  for (int c = 0; c < n; ++c)
+    for (int e = forceAndUser_.columnStart[c]; e < forceAndUser_.columnStart[c + 1]; ++e) {
+      const int row = forceAndUser_.rowIndex[e];
+      forceAndUserIndex_[e] = find(p, row, c);
+      if (forceAndUserIndex_[e] < 0) usable_ = false;
+      written[row] = true;
+    }
+  for (int r = 0; r < n; ++r)
+    if (written[r]) forceAndUserRows_.push_back(r);
+}
+
+void LocalNewtonMatrix::bodyBlocks(const Eigen::VectorXd& y, double cj, double* values) const {
+  const StateLayout& l = system_.layout();
+  for (int b = 0; b < l.bodies; ++b) {
+    const double* q = y.data() + l.body(b);
+    double blk[L::kPerBody][L::kPerBody] = {};
+    for (int c = 0; c < 3; ++c) {
+      blk[L::kR + c][L::kR + c] = cj;
+      blk[L::kR + c][L::kV + c] = -1.0;
+    }
+    // e' - E(e) w / 2 - mu e (multibody_system.hpp): its partials in e, w and mu.
+    const double e0 = q[L::kE], e1 = q[L::kE + 1], e2 = q[L::kE + 2], e3 = q[L::kE + 3];
+    const double w1 = q[L::kW], w2 = q[L::kW + 1], w3 = q[L::kW + 2], mu = q[L::kMu];
+    const double dfde[4][4] = {{0.0, -w1, -w2, -w3},
+                               {w1, 0.0, w3, -w2},
+                               {w2, -w3, 0.0, w1},
+                               {w3, w2, -w1, 0.0}};
+    const double dfdw[4][3] = {{-e1, -e2, -e3}, {e0, -e3, e2}, {e3, e0, -e1}, {-e2, e1, e0}};
+    const double e[4] = {e0, e1, e2, e3};
+    for (int r = 0; r < 4; ++r) {
+      for (int c = 0; c < 4; ++c)
+        blk[L::kE + r][L::kE + c] = (r == c ? cj - mu : 0.0) - 0.5 * dfde[r][c];
+      for (int c = 0; c < 3; ++c) blk[L::kE + r][L::kW + c] = -0.5 * dfdw[r][c];
+      blk[L::kE + r][L::kMu] = -e[r];
+      blk[L::kMu][L::kE + r] = 2.0 * e[r];
+    }
+    const double mass = system_.bodyMass(b);
+    for (int c = 0; c < 3; ++c) blk[L::kV + c][L::kV + c] = mass * cj;
+    // J w' + w x J w: cj J + [w]x J - [J w]x.
+    const Eigen::Matrix3d& jm = system_.bodyInertia(b);
+    const Eigen::Vector3d w(w1, w2, w3);
+    const Eigen::Vector3d jw = jm * w;
+    Eigen::Matrix3d skewW, skewJw;
+    skewW << 0.0, -w3, w2, w3, 0.0, -w1, -w2, w1, 0.0;
+    skewJw << 0.0, -jw(2), jw(1), jw(2), 0.0, -jw(0), -jw(1), jw(0), 0.0;
+    const Eigen::Matrix3d dw = cj * jm + skewW * jm - skewJw;
+    for (int r = 0; r < 3; ++r)
+      for (int c = 0; c < 3; ++c) blk[L::kW + r][L::kW + c] = dw(r, c);
+    const int* index = &bodyIndex_[static_cast<size_t>(kBodyEntries * b)];
+    int k = 0;
+    forEachBodyEntry([&](int r, int c) { values[index[k++]] += blk[r][c]; });
+  }
+}
+
+void LocalNewtonMatrix::kinematics(const Eigen::VectorXd& y) {
+  const StateLayout& l = system_.layout();
+  origin_.resize(static_cast<size_t>(l.bodies));
+  axes_.resize(static_cast<size_t>(l.bodies));
+  axesDerivative_.resize(static_cast<size_t>(4 * l.bodies));
+  using D = Dual<double>;
+  for (int b = 0; b < l.bodies; ++b) {
+    const double* q = y.data() + l.body(b);
+    origin_[b] = {q[L::kR], q[L::kR + 1], q[L::kR + 2]};
+    Quat<D> e{D(q[L::kE], 0.0), D(q[L::kE + 1], 0.0), D(q[L::kE + 2], 0.0),
+              D(q[L::kE + 3], 0.0)};
+    D* parts[4] = {&e.e0, &e.e1, &e.e2, &e.e3};
+    for (int k = 0; k < 4; ++k) {
+      parts[k]->d = 1.0;
+      const M3<D> a = rotationOf(e);
+      parts[k]->d = 0.0;
+      for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r) {
+          axesDerivative_[4 * b + k].c[c][r] = a.c[c][r].d;
+          if (k == 0) axes_[b].c[c][r] = a.c[c][r].v;
+        }
+    }
+  }
+}
+
+template <class S>
+void LocalNewtonMatrix::buildSeeded(const ConstraintEquation& eq, const EquationPlan& plan,
+                                    int base, V3<S>* origin, M3<S>* axes,
+                                    Frame<S>* frames) const {
+  const model::Model& m = system_.model();
+  const int n = plan.bodyCount;
+  const int last = std::min(7 * n, base + Seeds<S>::count);
+  // The poses of the equation's bodies with the chunk's directions seeded: translations of
+  // the origin, and the axes' derivatives along the Euler parameters.
+  for (int i = 0; i < n; ++i) {
+    const int b = plan.bodies[i];
+    origin[i] = V3<S>::from(origin_[b]);
+    axes[i] = M3<S>::from(axes_[b]);
+    for (int j = std::max(base, 7 * i); j < std::min(last, 7 * i + 7); ++j) {
+      const int q = j - 7 * i;
+      if (q < 3) {
+        Seeds<S>::at(origin[i][q], j - base) = 1.0;
+      } else {
+        const M3<double>& da = axesDerivative_[4 * b + q - 3];
+        for (int c = 0; c < 3; ++c)
+          for (int r = 0; r < 3; ++r) Seeds<S>::at(axes[i].c[c][r], j - base) = da.c[c][r];
+      }
+    }
+  }
+  // Marker frames as the residual builds them (MultibodySystem::cachedFrame).
+  for (int side = 0; side < eq.markerCount(); ++side) {
+    const model::Marker& mk = m.markers[eq.marker(side)];
+    const V3<S> sb = V3<S>::from(mk.position);
+    const M3<S> ab = M3<S>::from(mk.orientation);
+    const int i = plan.slot[side];
+    if (i < 0) {
+      frames[side] = {sb, ab};
+    } else {
+      frames[side].p = origin[i] + axes[i] * sb;
+      frames[side].a = axes[i] * ab;
+    }
+  }
+}
+
+template <class S>
+void LocalNewtonMatrix::equationChunk(const ConstraintEquation& eq, const EquationPlan& plan,
+                                      int base, double lambda, double* values) {
+  constexpr int kCount = Seeds<S>::count;
+  const int n = plan.bodyCount, directions = 7 * n;
+  const int last = std::min(directions, base + kCount);
+  // The seeded poses and frames, reused from the previous equation when it read the same
+  // markers (then its bodies, their order and the seeds are the same too).
+  constexpr bool kMulti = std::is_same_v<S, Multi>;
+  V3<S> localOrigin[6];
+  M3<S> localAxes[6];
+  Frame<S> localFrames[ConstraintEquation::kMaxMarkers];
+  V3<S>* origin = localOrigin;
+  M3<S>* axes = localAxes;
+  Frame<S>* frames = localFrames;
+  if constexpr (kMulti) {
+    origin = seeded_.origin;
+    axes = seeded_.axes;
+    frames = seeded_.frames;
+    bool same = seeded_.markerCount == eq.markerCount() && seeded_.base == base;
+    for (int side = 0; same && side < eq.markerCount(); ++side)
+      same = seeded_.markers[side] == eq.marker(side);
+    if (!same) {
+      seeded_.markerCount = eq.markerCount();
+      seeded_.base = base;
+      for (int side = 0; side < eq.markerCount(); ++side) seeded_.markers[side] = eq.marker(side);
+      buildSeeded(eq, plan, base, origin, axes, frames);
+    }
+  } else {
+    buildSeeded(eq, plan, base, origin, axes, frames);
+  }
+  const int* index = &index_[static_cast<size_t>(plan.index)];
+  const int rowStride = directions + 1;
+  const int* valueRow = index + 1;
+  const int* forceRows = index + 1 + directions;
+  S value;
+  if constexpr (std::is_same_v<S, Dual<double>>)
+    value = ConstraintSet::geometry(eq, frames);
+  else
+    value = MultibodySystem::analyticGeometry(eq, frames);
+  for (int j = base; j < last; ++j) values[valueRow[j]] += Seeds<S>::get(value, j - base);
+  for (int side = 0; side < eq.markerCount(); ++side) {
+    const int i = plan.slot[side];
+    if (i < 0) continue;
+    S out[6];
+    if constexpr (std::is_same_v<S, Dual<double>>)
+      MultibodySystem::sideGradient(eq, frames, side, origin[i], axes[i], out);
+    else
+      MultibodySystem::analyticSideGradient(eq, frames, side, origin[i], axes[i], out);
+    for (int r = 0; r < 6; ++r) {
+      const int* row = forceRows + (6 * i + r) * rowStride;
+      for (int j = base; j < last; ++j) values[row[j]] += lambda * Seeds<S>::get(out[r], j - base);
+      // The multiplier's column: the gradient itself (once, with the first chunk).
+      if (base == 0) values[row[directions]] += Seeds<S>::value(out[r]);
+    }
+  }
+}
+
+void LocalNewtonMatrix::assemble(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                 double cj, double* values, SparseJacobianWork& work) {
+  const StateLayout& l = system_.layout();
+  const int n = l.size();
+  std::fill(values, values + nonZeros_, 0.0);
+  bodyBlocks(y, cj, values);
+  kinematics(y);
+  seeded_.markerCount = -1;  // a new state
+  const auto& eqs = system_.constraints().equations();
+  for (size_t k = 0; k < equations_.size(); ++k) {
+    const ConstraintEquation& eq = eqs[k];
+    const EquationPlan& plan = equations_[k];
+    if (!eq.active) {
+      values[index_[static_cast<size_t>(plan.index)]] += 1.0;  // row lambda_k = lambda_k
+      continue;
+    }
+    const double lambda = y(l.lambda(static_cast<int>(k)));
+    const int directions = 7 * plan.bodyCount;
+    if (plan.bodyCount == 0) continue;  // between ground markers: a constant row
+    if (MultibodySystem::hasAnalyticGradient(eq))
+      for (int base = 0; base < directions; base += kChunk)
+        equationChunk<Multi>(eq, plan, base, lambda, values);
+    else
+      for (int base = 0; base < directions; ++base)
+        equationChunk<Dual<double>>(eq, plan, base, lambda, values);
+  }
+  // Force elements and user equations: compressed forward AD of their rows alone.
+  if (forceAndUser_.nonZeros() == 0) return;
+  using D = Dual<double>;
+  work.y.resize(static_cast<size_t>(n));
+  work.yp.resize(static_cast<size_t>(n));
+  work.g.resize(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    work.y[i] = D(y(i), 0.0);
+    work.yp[i] = D(yp(i), 0.0);
+  }
+  const JacobianPattern& p = forceAndUser_;
+  for (int colour = 0; colour < p.colours(); ++colour) {
+    const int first = p.colourStart[colour], end = p.colourStart[colour + 1];
+    for (int k = first; k < end; ++k) {
+      const int c = p.colourColumns[k];
+      work.y[c].d = 1.0;
+      work.yp[c].d = l.differential(c) ? cj : 0.0;
+    }
+    for (int r : forceAndUserRows_) work.g[r] = D(0.0, 0.0);
+    system_.forceAndUserResidual(t, work.y.data(), work.yp.data(), work.g.data());
+    for (int k = first; k < end; ++k) {
+      const int c = p.colourColumns[k];
+      for (int e = p.columnStart[c]; e < p.columnStart[c + 1]; ++e)
+        values[forceAndUserIndex_[e]] += work.g[p.rowIndex[e]].d;
+      work.y[c].d = 0.0;
+      work.yp[c].d = 0.0;
+    }
+  }
+}
+
+}  // namespace openmss::mechanics

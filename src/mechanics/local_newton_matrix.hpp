@@ -1,0 +1,96 @@
+#pragma once
+// The sparse Newton matrix dG/dy + cj dG/dy' of a MultibodySystem assembled element by element
+// (docs/theory.md §9a) instead of by compressed forward AD over the whole residual:
+//  * body blocks (kinematic, Euler-parameter, Newton-Euler left-hand sides, normalisation):
+//    analytic, 60 entries per body;
+//  * each constraint equation: its value row and its reaction lambda C^T in the force and
+//    moment rows of the bodies it touches, differentiated with a local forward-AD pass over the
+//    positions (r, e) of those bodies only (all 7 per body in one multi-direction dual for the
+//    kinds with analytic gradients; one direction at a time for the others); the multiplier's
+//    column is the gradient itself;
+//  * force elements and user equations: compressed forward AD of their rows alone, on their own
+//    coloured pattern (forceAndUserPattern).
+// Every entry lands in the values of the full pattern through indices found once, when the plan
+// is made. A pattern this cannot serve (dense rows, after a repair or for a dependency the
+// pattern does not resolve) makes usable() false: the caller then colours the whole residual.
+
+#include <cstdint>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "common/vec3.hpp"
+#include "mechanics/constraint_set.hpp"
+#include "mechanics/jacobian_pattern.hpp"
+#include "mechanics/local_dual.hpp"
+
+namespace openmss::mechanics {
+
+class MultibodySystem;
+
+class LocalNewtonMatrix {
+ public:
+  LocalNewtonMatrix(const MultibodySystem& system, const JacobianPattern& pattern);
+
+  // Directions per multi-direction pass: all positions (r, e) of two bodies.
+  static constexpr int kChunk = 14;
+
+  bool usable() const { return usable_; }
+  std::uint64_t patternStamp() const { return patternStamp_; }
+  // Overwrites values (the pattern's nonzeros, column-major) with the Newton matrix; work's dual
+  // vectors serve the compressed passes of the force elements and user equations.
+  void assemble(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
+                double* values, SparseJacobianWork& work);
+
+ private:
+  static constexpr int kBodyEntries = 60;
+  struct EquationPlan {
+    int bodies[6];     // moving bodies the markers sit on, distinct, ascending
+    int bodyCount = 0;
+    int slot[6];       // per marker side: index into bodies, -1 for ground
+    int index = 0;     // first of this equation's value indices in index_
+  };
+  // Value index of (row, column) in the pattern, -1 when the pattern lacks it.
+  static int find(const JacobianPattern& pattern, int row, int column);
+  void planBodies(const JacobianPattern& pattern);
+  void planEquations(const JacobianPattern& pattern);
+  void planForceAndUser(const JacobianPattern& pattern);
+  void bodyBlocks(const Eigen::VectorXd& y, double cj, double* values) const;
+  void kinematics(const Eigen::VectorXd& y);
+  template <class S>
+  void buildSeeded(const ConstraintEquation& eq, const EquationPlan& plan, int base,
+                   V3<S>* origin, M3<S>* axes, Frame<S>* frames) const;
+  template <class S>
+  void equationChunk(const ConstraintEquation& eq, const EquationPlan& plan, int base,
+                     double lambda, double* values);
+
+  const MultibodySystem& system_;
+  std::uint64_t patternStamp_ = 0;
+  int nonZeros_ = 0;
+  bool usable_ = true;
+  std::vector<int> bodyIndex_;      // kBodyEntries per body
+  std::vector<EquationPlan> equations_;
+  // Per equation: (lambda, lambda); the value row over the 7 n position columns; the 6 n force
+  // and moment rows over those columns and lambda (7 n + 1 each), n = bodyCount.
+  std::vector<int> index_;
+  JacobianPattern forceAndUser_;
+  std::vector<int> forceAndUserIndex_;  // per nonzero of forceAndUser_: its index in values
+  std::vector<int> forceAndUserRows_;   // rows that pattern writes
+  // The seeded poses and marker frames of the last multi-direction pass: the equations of one
+  // joint read the same markers, so they are built once per joint, not once per equation.
+  struct SeededFrames {
+    int markers[ConstraintEquation::kMaxMarkers];
+    int markerCount = -1;  // -1: nothing cached
+    int base = 0;
+    Frame<DualVec<kChunk>> frames[ConstraintEquation::kMaxMarkers];
+    V3<DualVec<kChunk>> origin[6];
+    M3<DualVec<kChunk>> axes[6];
+  };
+  SeededFrames seeded_;
+  // Per body at the current state: origin, axes and d(axes)/d(e_k).
+  std::vector<V3<double>> origin_;
+  std::vector<M3<double>> axes_;
+  std::vector<M3<double>> axesDerivative_;  // 4 per body
+};
+
+}  // namespace openmss::mechanics
