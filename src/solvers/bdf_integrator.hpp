@@ -77,6 +77,9 @@ class BdfIntegrator final : public Integrator {
   // non-finite unknown fails the attempt.
   static double weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w);
   void setWeights();
+  // True when every differential change of the last iteration (dy_) is at the round-off of its
+  // unknown at yNew_ (kRoundOffUlps in the .cpp): a stalled iteration there has converged.
+  bool withinRoundOff(double cj);
   void noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy);
   double orderErrorEstimate(int q, double h) const;
 
@@ -105,6 +108,9 @@ class BdfIntegrator final : public Integrator {
   // Per-unknown masks fixed at start(): 1 where the unknown is under error control / has a
   // derivative in G (velocities of an index-3 problem have one but no error control).
   Eigen::VectorXd errorMask_, differentialMask_;
+  // 1 for velocity unknowns (their round-off grows with cj), 0 otherwise; and the floor built
+  // from it per attempt (withinRoundOff).
+  Eigen::VectorXd velocityMask_, roundOffFloor_;
   Eigen::VectorXi rowExponent_, unknownExponent_;
   // Inverse tolerance weights of the current step, 1 / (ERROR (1 + |y_n,i|)), masked: for the
   // error test (error-controlled unknowns) and for the corrector's convergence test.

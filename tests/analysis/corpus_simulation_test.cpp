@@ -67,15 +67,6 @@ std::string modelNameOf(const std::string& acf) {
   return lines.empty() ? "" : lines[0];
 }
 
-// Data sets that build but whose dynamic run fails for a reason other than a statement's
-// support: both KUKA LWR arms fail the same way (corrector at t < 0.03 s) with all their
-// VARIABLEs removed, on the solver before VARIABLEs could read WDTZ/JOINT. They are run and
-// reported, not asserted; remove an entry as soon as it reaches its END.
-const std::set<std::string> kKnownDynamicFailures = {
-    "MarcinPiotrowski__MultiBodySystemDynamics__LWR_1",
-    "MarcinPiotrowski__MultiBodySystemDynamics__test__LWR_6DOF_GRABER",
-};
-
 TEST(CorpusSimulation, EverySupportedDataSetSimulatesToItsEnd) {
   if (!fs::exists(kCorpus)) GTEST_SKIP() << "the corpus is absent: " << kCorpus;
   std::vector<fs::path> sets;
@@ -111,11 +102,6 @@ TEST(CorpusSimulation, EverySupportedDataSetSimulatesToItsEnd) {
     }
     write(dir / "run.acf", commands);
     const Result r = run("run run.acf --quiet", dir);
-    if (kKnownDynamicFailures.count(base)) {
-      std::cout << "known dynamic failure (status " << r.status << "): " << base << "\n";
-      fs::remove_all(dir);
-      continue;
-    }
     EXPECT_EQ(r.status, 0) << base << " with " << how << ":\n" << r.output;
     bool ended = false;
     for (const auto& e : fs::directory_iterator(dir))
