@@ -16,8 +16,11 @@ constexpr double kCorrectorShare = 1e-4;
 // ... or this fraction of the tolerance (HMAX-limited steps, whose local error is tiny).
 constexpr double kTightChange = 1e-9;
 // A corrector that stops contracting with changes below this (in units of the tolerance) has
-// reached round-off.
-constexpr double kStalledChange = 1e-3;
+// reached the noise floor of the linear solves. Stalled changes are noise, not a same-sign
+// remainder, so they do not add up like kCorrectorShare's. 1e-3 failed the 1000-link planar
+// chain at t = 5.85 s (ERROR = 1e-5): the KKT system's conditioning leaves velocity noise near
+// 0.01 of the tolerance there; 1e-1 runs it to 10 s with every test unchanged.
+constexpr double kStalledChange = 1e-1;
 // ... or whose every change is below this many ulps of the unknown's own round-off: positions
 // eps (1 + |y|), velocities cj eps (1 + |y|) (an index-3 velocity is recovered from positions
 // through cj). At ERROR = 1e-10 and steps of 1e-8 s (the KUKA arm data sets of the corpus)
