@@ -151,11 +151,13 @@ def main():
     models = args.models.split(",")
     workdir = tempfile.mkdtemp(prefix="openmss-bench-")
     rows, references = [], []
-    timed_out = set()  # (engine, setting) or (engine, model, N) that timed out: skip the rest
+    # (engine, model, setting) or (engine, model, N) that timed out: skip the larger sizes of that
+    # setting and the tighter settings at that size, of the same model only.
+    timed_out = set()
     current = {"model": None}
 
     def guarded(engine, label, n, fn, timeout, peer):
-        key = (engine, label)
+        key = (engine, current["model"], label)
         if peer and n > args.peer_max_n:
             return {"engine": engine, "setting": label, "status": "skipped",
                     "note": f"skipped, N > {args.peer_max_n} (OPENMSS_BENCH_PEER_MAX_N)"}

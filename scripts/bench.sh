@@ -58,7 +58,12 @@ fi
 
 docs=(--markdown docs/performance.md --plot docs/performance-scaling.png)
 if [[ "${OPENMSS_BENCH_NO_DOCS:-0}" == 1 ]]; then docs=(--markdown "" --plot ""); fi
-command="scripts/bench.sh $*"
+# The page records the knobs that change what is run, so that the command reproduces it.
+knobs=""
+for k in OPENMSS_BENCH_TIMEOUT OPENMSS_BENCH_PEER_TIMEOUT OPENMSS_BENCH_PEER_MAX_N OPENMSS_BENCH_SIZES OPENMSS_BENCH_MODELS; do
+  [[ -n "${!k:-}" ]] && knobs+="$k=${!k} "
+done
+command="${knobs}scripts/bench.sh $*"
 # Debian's interpreter, which python3-matplotlib serves (a pyenv python3 first on PATH does not).
 python=/usr/bin/python3
 [[ -x "$python" ]] || python=python3
