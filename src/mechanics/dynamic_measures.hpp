@@ -58,9 +58,10 @@ void markerAcceleration(const model::Model& m, const StateLayout& l, int marker,
 
 // The derivative of equation eq's geometry along virtual displacement `dir` of the part that
 // carries marker slot `side` (0-2: translation along ground axes, 3-5: rotation about the part's
-// own axes; `origin`, `axes` that part's frame). The same construction as the residual's
-// constraint force -C^T lambda (MultibodySystem::virtualDerivative), so reactions read here are
-// the forces the residual applies.
+// own axes; `origin`, `axes` that part's frame): A <- A (I + [e_k] x) turns the part's points
+// and axes about its k-th body axis. The residual's constraint force -C^T lambda uses this same
+// function (MultibodySystem::virtualDerivative), so reactions read here are the forces the
+// residual applies.
 template <class T>
 T virtualGeometryDerivative(const ConstraintEquation& eq, const Frame<T>* frames, int side,
                             int dir, const V3<T>& origin, const M3<T>& axes) {

@@ -14,6 +14,7 @@
 #include "common/dual.hpp"
 #include "mechanics/bound_function.hpp"
 #include "mechanics/constraint_set.hpp"
+#include "mechanics/dynamic_measures.hpp"
 #include "mechanics/force_elements.hpp"
 #include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/measures.hpp"
@@ -226,27 +227,8 @@ Frame<T> MultibodySystem::frame(int marker, const T* y) const {
 template <class T>
 T MultibodySystem::virtualDerivative(const ConstraintEquation& eq, const Frame<T>* frames,
                                      int side, int dir, const V3<T>& origin, const M3<T>& axes) {
-  using S = Dual<T>;
-  Frame<S> f[ConstraintEquation::kMaxMarkers];
-  for (int s = 0; s < eq.markerCount(); ++s)
-    for (int c = 0; c < 3; ++c) {
-      f[s].p[c] = S(frames[s].p[c], T(0.0));
-      for (int r = 0; r < 3; ++r) f[s].a.c[r][c] = S(frames[s].a.c[r][c], T(0.0));
-    }
-  if (dir < 3) {
-    f[side].p[dir].d = T(1.0);
-  } else {
-    // A <- A (I + [e_k] x): points and axes of the part turn about its k-th body axis.
-    V3<T> ek(T(0.0), T(0.0), T(0.0));
-    ek[dir - 3] = T(1.0);
-    const V3<T> dp = axes * cross(ek, axes.tmul(frames[side].p - origin));
-    for (int c = 0; c < 3; ++c) f[side].p[c].d = dp[c];
-    for (int r = 0; r < 3; ++r) {
-      const V3<T> da = axes * cross(ek, axes.tmul(frames[side].a.c[r]));
-      for (int c = 0; c < 3; ++c) f[side].a.c[r][c].d = da[c];
-    }
-  }
-  return ConstraintSet::geometry(eq, f).d;
+  // One definition for the residual and the reaction read-backs of force functions.
+  return virtualGeometryDerivative(eq, frames, side, dir, origin, axes);
 }
 
 template <class T>

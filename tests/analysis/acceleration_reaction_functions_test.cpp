@@ -21,64 +21,18 @@
 #include "mechanics/jacobian_pattern.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/bdf_run.hpp"
 #include "support/newton_matrix_check.hpp"
 
 namespace openmss::analysis {
 namespace {
 
-model::Model build(const std::string& text) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "dyn.adm", ds, d);
-  model::Model m;
-  EXPECT_TRUE(model::buildModel(ds, m, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
-  return m;
-}
+model::Model build(const std::string& text) { return test::buildModelFromText(text, "dyn.adm"); }
 
-// Initial conditions as a run makes them, then GSTIFF-style BDF.
-class DynamicRun {
+// Initial conditions as a run makes them, then GSTIFF-style BDF; outputs made consistent.
+class DynamicRun : public test::BdfRun {
  public:
-  DynamicRun(const model::Model& m, double error) : system_(m) {
-    y_ = system_.initialState();
-    mechanics::removeRedundantConstraints(system_, y_);
-    EXPECT_TRUE(mechanics::assemblePositions(system_, 0.0, y_, 1e-12, 25).converged);
-    mechanics::solveVelocities(system_, 0.0, y_);
-    EXPECT_TRUE(mechanics::solveAccelerations(system_, 0.0, y_, yp_));
-    settings_.error = error;
-    settings_.hmax = 0.01;
-    settings_.hinit = 1e-4;
-  }
-  const mechanics::MultibodySystem& system() const { return system_; }
-  const Eigen::VectorXd& y() const { return y_; }
-  const Eigen::VectorXd& yp() const { return yp_; }
-  void start() {
-    dae_ = std::make_unique<MultibodyDae>(system_);
-    bdf_ = std::make_unique<solvers::BdfIntegrator>(*dae_, settings_);
-    bdf_->start(0.0, y_, yp_);
-  }
-  void advanceTo(double t) {
-    ASSERT_TRUE(bdf_->advanceTo(t)) << bdf_->failure().reason;
-    y_ = bdf_->y();
-    yp_ = bdf_->yp();
-    // Outputs are made consistent as a run makes them (accelerations, multipliers, VARIABLEs).
-    ASSERT_TRUE(mechanics::solveAccelerations(system_, t, y_, yp_));
-  }
-  // Velocities projected on C u = 0 (the index-3 integrator satisfies it only to its error),
-  // then accelerations and multipliers again: a state on which the reaction identities are exact.
-  void projectVelocities(double t) {
-    mechanics::solveVelocities(system_, t, y_);
-    ASSERT_TRUE(mechanics::solveAccelerations(system_, t, y_, yp_));
-  }
-  double variable(int k) const { return y_(system_.layout().userAlg(k)); }
-  double body(int b, int entry) const { return y_(system_.layout().body(b) + entry); }
-
- private:
-  mechanics::MultibodySystem system_;
-  Eigen::VectorXd y_, yp_;
-  solvers::BdfSettings settings_;
-  std::unique_ptr<MultibodyDae> dae_;
-  std::unique_ptr<solvers::BdfIntegrator> bdf_;
+  DynamicRun(const model::Model& m, double error) : BdfRun(m, error, 0.01, true) {}
 };
 
 // Every nonzero of the dense Newton matrix lies in the structural pattern, and the rows of

@@ -15,56 +15,18 @@
 #include "mechanics/user_state_solve.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/bdf_run.hpp"
 
 namespace openmss::analysis {
 namespace {
 
-model::Model build(const std::string& text) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "user.adm", ds, d);
-  model::Model m;
-  EXPECT_TRUE(model::buildModel(ds, m, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
-  return m;
-}
+model::Model build(const std::string& text) { return test::buildModelFromText(text, "user.adm"); }
 
 // Initial conditions as a run does them (positions, velocities, then accelerations with the
 // user algebraic unknowns), then the BDF integrator.
-class UserRun {
+class UserRun : public test::BdfRun {
  public:
-  UserRun(const model::Model& m, double error) : system_(m) {
-    y_ = system_.initialState();
-    mechanics::removeRedundantConstraints(system_, y_);
-    EXPECT_TRUE(mechanics::assemblePositions(system_, 0.0, y_, 1e-12, 25).converged);
-    mechanics::solveVelocities(system_, 0.0, y_);
-    EXPECT_TRUE(mechanics::solveAccelerations(system_, 0.0, y_, yp_));
-    settings_.error = error;
-    settings_.hmax = 0.05;
-    settings_.hinit = 1e-4;
-  }
-  const mechanics::MultibodySystem& system() const { return system_; }
-  const Eigen::VectorXd& y() const { return y_; }
-  const Eigen::VectorXd& yp() const { return yp_; }
-  void start() {
-    dae_ = std::make_unique<MultibodyDae>(system_);
-    bdf_ = std::make_unique<solvers::BdfIntegrator>(*dae_, settings_);
-    bdf_->start(0.0, y_, yp_);
-  }
-  void advanceTo(double t) {
-    ASSERT_TRUE(bdf_->advanceTo(t)) << bdf_->failure().reason;
-    y_ = bdf_->y();
-    yp_ = bdf_->yp();
-  }
-  double variable(int k) const { return y_(system_.layout().userAlg(k)); }
-  double diffState(int k) const { return y_(system_.layout().userDiff(k)); }
-
- private:
-  mechanics::MultibodySystem system_;
-  Eigen::VectorXd y_, yp_;
-  solvers::BdfSettings settings_;
-  std::unique_ptr<MultibodyDae> dae_;
-  std::unique_ptr<solvers::BdfIntegrator> bdf_;
+  UserRun(const model::Model& m, double error) : BdfRun(m, error, 0.05, false) {}
 };
 
 const char* kHeader =
