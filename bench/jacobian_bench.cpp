@@ -2,7 +2,9 @@
 // (bench/model_generators.hpp): one residual, one sparse Newton matrix (structural pattern,
 // element-local assembly, with its run-time pattern check; and by compressed forward AD of the
 // whole residual), one KLU factorisation and solve, and
-// the BDF step loop; the dense matrix and LU beside them for small N, which is where the
+// the BDF step loop; the corrector's solve and the factorisation alone by KLU variant (ordering,
+// BTF, positions eliminated first: BM_Solve, BM_Factor, with the L+U entry counts); the dense
+// matrix and LU beside them for small N, which is where the
 // integrator's sparse threshold (BdfIntegrator::kSparseThreshold) comes from. Figures only;
 // nothing is asserted. Run: build/bench/jacobian_bench (OPENMSS_BUILD_BENCH=ON).
 
@@ -10,6 +12,7 @@
 
 #include <map>
 #include <memory>
+#include <vector>
 
 #include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
@@ -134,6 +137,59 @@ void BM_KluFactorSolve(benchmark::State& state) {
 }
 BENCHMARK(BM_KluFactorSolve)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Arg(100)->Arg(1000)
     ->Unit(benchmark::kMicrosecond);
+
+// The corrector's linear solve, one per iteration (several per step; a factorisation only every
+// ten steps or so), by KLU's choices: range(1) = 0 BTF + AMD (the default), 1 COLAMD, 2 without
+// BTF. Counters: unknowns of the factorised matrix, entries of its L and U. Eliminating the
+// positions before KLU was measured as well and not kept (docs/theory.md §9a).
+solvers::KluLinearSolver::Options variantOptions(int variant) {
+  solvers::KluLinearSolver::Options o;
+  if (variant == 1) o.ordering = 1;
+  if (variant == 2) o.btf = false;
+  return o;
+}
+
+std::unique_ptr<solvers::LinearSolver> factorisedVariant(int variant,
+                                                         const Eigen::SparseMatrix<double>& jac,
+                                                         benchmark::State& state) {
+  auto klu = std::make_unique<solvers::KluLinearSolver>();
+  klu->setOptions(variantOptions(variant));
+  klu->factor(jac);
+  state.counters["factored_unknowns"] = static_cast<double>(jac.rows());
+  state.counters["LU_nonzeros"] = static_cast<double>(klu->factorNonZeros());
+  return klu;
+}
+
+Eigen::SparseMatrix<double> scaledMatrix(Chain& c) {
+  Eigen::SparseMatrix<double> jac = *c.dae->pattern();
+  c.dae->newtonMatrixSparse(0.0, c.y, c.yp, c.cj, jac);
+  scale(c, jac);
+  return jac;
+}
+
+void BM_Solve(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  const Eigen::SparseMatrix<double> jac = scaledMatrix(c);
+  auto solver = factorisedVariant(static_cast<int>(state.range(1)), jac, state);
+  Eigen::VectorXd x(c.y.size());
+  for (auto _ : state) {
+    x.setOnes();
+    solver->solve(x);
+    benchmark::DoNotOptimize(x.data());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_Solve)->ArgsProduct({{10, 100, 1000}, {0, 1, 2}})
+    ->Unit(benchmark::kMicrosecond);
+
+void BM_Factor(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  const Eigen::SparseMatrix<double> jac = scaledMatrix(c);
+  auto solver = factorisedVariant(static_cast<int>(state.range(1)), jac, state);
+  for (auto _ : state) benchmark::DoNotOptimize(solver->factor(jac));
+  count(state, c);
+}
+BENCHMARK(BM_Factor)->ArgsProduct({{10, 100, 1000}, {0}})->Unit(benchmark::kMicrosecond);
 
 void BM_DenseLuFactorSolve(benchmark::State& state) {
   Chain& c = chain(static_cast<int>(state.range(0)));

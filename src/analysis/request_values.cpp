@@ -127,7 +127,8 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
                     const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
   using K = model::MeasureKind;
   double out = 0.0;
-  if (mechanics::kinematicMeasure(s.model(), s.layout(), ms, y.data(), &out)) return out;
+  if (mechanics::kinematicMeasure(s.model(), s.layout(), ms, y.data(), &out, s.runState()))
+    return out;
   const Kin i = markerKinematics(s, ms.i, y, yp);
   const Kin j = markerKinematics(s, ms.j, y, yp);
   const Eigen::Matrix3d k = ms.k >= 0 ? markerKinematics(s, ms.k, y, yp).axes
@@ -205,7 +206,7 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
       host.assign(b.measures.size(), 0.0);
       for (size_t k = 0; k < b.measures.size(); ++k)
         host[k] = measureValue(s, b.measures[k], t, y, yp);
-      c[col] = b.expression.evaluate(host.empty() ? nullptr : host.data(), t);
+      c[col] = b.expression.evaluate(host.empty() ? nullptr : host.data(), t, s.runState());
     }
     return c;
   }

@@ -17,7 +17,7 @@ double evaluateOn(const mechanics::MultibodySystem& system, const model::BoundEx
                   double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
   std::vector<double> host(b.measures.size());
   for (size_t k = 0; k < host.size(); ++k) host[k] = measureValue(system, b.measures[k], t, y, yp);
-  return b.expression.evaluate(host.empty() ? nullptr : host.data(), t);
+  return b.expression.evaluate(host.empty() ? nullptr : host.data(), t, system.runState());
 }
 
 // How a sensor's test is reached inside a step (see SensorMonitor::distance).

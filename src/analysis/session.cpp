@@ -9,6 +9,7 @@
 #include "analysis/integrator_factory.hpp"
 #include "analysis/multibody_dae.hpp"
 #include "analysis/request_values.hpp"
+#include "analysis/run_state_integrator.hpp"
 #include "analysis/sensor_monitor.hpp"
 #include "analysis/discrete_sampler.hpp"
 #include "language/reader.hpp"
@@ -122,6 +123,9 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
     return false;
   }
   system_ = std::make_unique<mechanics::MultibodySystem>(*model_);
+  // Cumulative angles and DELAY histories of this model's run (docs/theory.md §11a).
+  runState_ = std::make_unique<mechanics::ExpressionRunState>(*model_);
+  system_->setRunState(runState_.get());
   y_ = system_->initialState();
   yp_ = Eigen::VectorXd::Zero(y_.size());
   t_ = 0.0;
@@ -421,7 +425,9 @@ bool Session::simulate(const language::Statement& c) {
     m.analysisStatus.clearIntegrator();
   };
   if (!initialized_) {
+    runState_->reset();  // a new run: no turns counted, no DELAY history
     if (!initialConditions()) return false;
+    runState_->accept(*system_, t_, y_, yp_);
     enterAnalysisMode();
     if (!writeOutputStep(t_, y_, yp_)) return false;
   }
@@ -471,6 +477,7 @@ bool Session::simulate(const language::Statement& c) {
       }
       t_ = t;
       ++summary_.steps;
+      runState_->accept(*system_, t_, y_, yp_);  // each kinematic output is an accepted state
       if (!writeOutputStep(t_, y_, yp_)) return false;
       progress(t_, summary_.steps);
     }
@@ -490,7 +497,9 @@ bool Session::simulate(const language::Statement& c) {
     MultibodyDae dae(*system_);
     const std::unique_ptr<solvers::Integrator> integrator =
         makeIntegrator(plan, *system_, dae, *end);
-    solvers::Integrator& bdf = *integrator;
+    // Accepted steps and restarts update the expression run state (run_state_integrator.hpp).
+    RunStateIntegrator tracked(*integrator, *runState_, *system_);
+    solvers::Integrator& bdf = tracked;
     // Advice from the method as it appears (ABAM's stiffness warning), each line once.
     std::size_t warningsShown = 0;
     auto showIntegratorWarnings = [&]() {
@@ -501,7 +510,7 @@ bool Session::simulate(const language::Statement& c) {
       }
     };
     EprintLog eprint(msg_, dae);  // DEBUG/EPRINT: per step and iteration, to the .msg
-    if (m.debug.eprint) eprint.attach(bdf);
+    if (m.debug.eprint) eprint.attach(*integrator);  // observers live on the method itself
     bdf.start(t_, y_, yp_);
     // SENSOR events (analysis/sensor_monitor.hpp) are checked after every step; a sensor's
     // DT= moves the output grid.

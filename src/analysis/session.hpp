@@ -80,6 +80,9 @@ class Session {
   std::string prefix_;
   std::unique_ptr<model::Model> model_;
   std::unique_ptr<mechanics::MultibodySystem> system_;
+  // History of the cumulative AX/AY/AZ and DELAY (mechanics/expression_run_state.hpp), updated
+  // after accepted states only; the system reads it through setRunState.
+  std::unique_ptr<mechanics::ExpressionRunState> runState_;
   bool initialized_ = false;
   bool stopped_ = false;
   double t_ = 0.0;

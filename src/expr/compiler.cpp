@@ -15,6 +15,7 @@ bool isConstant(const SyntaxNode& node) {
     case NodeKind::Time:
     case NodeKind::Host:
     case NodeKind::DataCall:  // the data is bound after compilation
+    case NodeKind::Delay:     // reads the run's history
       return false;
     case NodeKind::If:
       if (!isConstant(node.children[0])) return false;
@@ -100,6 +101,16 @@ class Compiler {
         return addWith(OpCode::DataCall, args, static_cast<std::uint32_t>(node.dataIndex),
                        Builtin::Abs);
       }
+      case NodeKind::Delay: {
+        // Operands e_delayed and e_delay: e_delayed is needed here for a zero delay; e_history
+        // is a separate time-only program (Program::DelayCall), since it is read at TIME - delay.
+        const std::uint32_t delayed = emit(node.children[0]);
+        const std::uint32_t delay = emit(node.children[1]);
+        // TIME is the third operand: the value moves along the history as time passes.
+        code_.usesTime = true;
+        return add(OpCode::Delay, {delayed, delay, code_.timeSlot},
+                   static_cast<std::uint32_t>(node.delayIndex));
+      }
       case NodeKind::Number:
         break;
     }
@@ -183,6 +194,7 @@ double foldConstant(const SyntaxNode& node) {
     case NodeKind::Time:
     case NodeKind::Host:
     case NodeKind::DataCall:  // never constant (isConstant)
+    case NodeKind::Delay:
       break;
   }
   return 0.0;

@@ -7,6 +7,18 @@
 #include "expr/program.hpp"
 
 namespace openmss::expr {
+namespace {
+
+// The DELAY nodes of a tree by their delayIndex.
+void collectDelays(const SyntaxNode& node, std::vector<const SyntaxNode*>& out) {
+  if (node.kind == NodeKind::Delay) {
+    if (out.size() <= node.delayIndex) out.resize(node.delayIndex + 1, nullptr);
+    out[node.delayIndex] = &node;
+  }
+  for (const SyntaxNode& child : node.children) collectDelays(child, out);
+}
+
+}  // namespace
 
 Expression::Expression() = default;
 Expression::~Expression() = default;
@@ -37,8 +49,19 @@ bool Expression::parse(const std::string& text, const SourceLocation& where,
     return false;
   }
   const std::size_t hostCount = parsed.hostCalls.size();
+  std::vector<const SyntaxNode*> delayNodes;
+  collectDelays(parsed.root, delayNodes);
+  std::vector<Program::DelayCall> delays;
+  for (const SyntaxNode* node : delayNodes) {
+    // e_delayed over the whole expression's host values; e_history over TIME alone.
+    delays.push_back({std::make_shared<const Program>(text, parsed.hostCalls,
+                                                      compileProgram(node->children[0], hostCount)),
+                      std::make_shared<const Program>(text, std::vector<HostCall>{},
+                                                      compileProgram(node->children[2], 0))});
+  }
   out.program_ = std::make_unique<Program>(text, std::move(parsed.hostCalls),
                                            compileProgram(parsed.root, hostCount));
+  out.program_->setDelayCalls(std::move(delays));
   out.program_->setDataCalls(std::move(parsed.dataCalls));
   if (parsed.user) out.program_->setUserCall(std::move(*parsed.user));
   return true;
@@ -73,17 +96,29 @@ const UserCall* Expression::userCall() const {
   return program_ ? program_->userCall() : nullptr;
 }
 
-double Expression::evaluate(const double* hostValues, double time) const {
-  return program_ ? program_->evaluate(hostValues, time) : 0.0;
+double Expression::evaluate(const double* hostValues, double time, const RunContext* run) const {
+  return program_ ? program_->evaluate(hostValues, time, run) : 0.0;
 }
 
-double Expression::evaluate(const double* hostValues, double time, double* dHost,
-                            double* dTime) const {
+double Expression::evaluate(const double* hostValues, double time, double* dHost, double* dTime,
+                            const RunContext* run) const {
   if (!program_) {
     if (dTime != nullptr) *dTime = 0.0;
     return 0.0;
   }
-  return program_->evaluate(hostValues, time, dHost, dTime);
+  return program_->evaluate(hostValues, time, dHost, dTime, run);
+}
+
+std::size_t Expression::delayCount() const {
+  return program_ ? program_->delayCalls().size() : 0;
+}
+
+const void* Expression::delayKey(std::size_t k) const {
+  return program_->delayCalls().at(k).delayed.get();
+}
+
+double Expression::delayArgument(std::size_t k, const double* hostValues, double time) const {
+  return program_->delayCalls().at(k).delayed->evaluate(hostValues, time);
 }
 
 TimeJet Expression::evaluateTimeJet(double time) const {

@@ -60,7 +60,8 @@ struct TimeJet {
   double d2 = 0.0;  // d2/dt2
 };
 
-class Program;  // the compiled form (private to the module)
+class Program;     // the compiled form (private to the module)
+class RunContext;  // the run's history that DELAY reads (expr/run_context.hpp)
 
 // Evaluation allocates nothing and keeps no mutable state in the object, so const methods may
 // be called concurrently on one Expression (work arrays live on the caller's stack; see
@@ -97,12 +98,21 @@ class Expression {
   // The USER(...) call when the expression is one, else nullptr.
   const UserCall* userCall() const;
 
-  // Value. hostValues has hostCalls().size() entries. No allocation.
-  double evaluate(const double* hostValues, double time) const;
+  // Value. hostValues has hostCalls().size() entries. No allocation. `run` supplies the
+  // history of DELAY arguments; without it DELAY reads its e_history at TIME - delay.
+  double evaluate(const double* hostValues, double time, const RunContext* run = nullptr) const;
 
   // Value and exact partial derivatives: dHost[k] = d value / d hostValues[k] (size
   // hostCalls().size()), *dTime = d value / d TIME (explicit dependence only). No allocation.
-  double evaluate(const double* hostValues, double time, double* dHost, double* dTime) const;
+  double evaluate(const double* hostValues, double time, double* dHost, double* dTime,
+                  const RunContext* run = nullptr) const;
+
+  // DELAY calls, in order of appearance. The run records delayArgument(k, ...) (e_delayed on
+  // the same host values as the whole expression) after each accepted step, under the key
+  // delayKey(k), which copies of the expression share.
+  std::size_t delayCount() const;
+  const void* delayKey(std::size_t k) const;
+  double delayArgument(std::size_t k, const double* hostValues, double time) const;
 
   // For expressions without host calls: value and first and second derivatives in TIME
   // (MOTION functions need velocity and acceleration). Precondition: hostCalls().empty().

@@ -37,10 +37,6 @@ NameInfo vectorHost(std::string_view name, int maxArgs, std::string_view usage) 
   return {name, NameKind::VectorHost, 1, maxArgs, Builtin::Abs, 0.0, usage};
 }
 
-NameInfo vectorName(std::string_view name) {
-  return {name, NameKind::Vector, 0, 0, Builtin::Abs, 0.0, name};
-}
-
 std::vector<NameInfo> buildCatalog() {
   std::vector<NameInfo> c;
   // Constants and TIME (digest 3.2).
@@ -147,8 +143,12 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(dataFunction("INVPSD", 7, 7, "INVPSD(x, id, f0, f1, nf, linlog, seed)"));
   c.push_back({"USER", NameKind::User, 0, 30, Builtin::Abs, 0.0, "USER(r1[, ..., r30])"});
 
-  // Need run history, modal data or a definition that was not found (digest 3.4, 3.5).
-  for (std::string_view n : {"DELAY", "AO", "FXFREQ", "FXMODE"}) c.push_back(unsupported(n));
+  // The value of an expression at an earlier time, from the history the run records
+  // (docs/expressions.md, "DELAY").
+  c.push_back({"DELAY", NameKind::Delay, 3, 4, Builtin::Abs, 0.0,
+               "DELAY(e_delayed, e_delay, e_history[, 0])"});
+  // Modal data or a definition that was not found (digest 3.4, 3.5).
+  for (std::string_view n : {"AO", "FXFREQ", "FXMODE"}) c.push_back(unsupported(n));
 
   // Vectors (digest 3.1, 3.9): component triples of the host measures, MAG and UV.
   c.push_back(vectorHost("DXYZ", 3, "DXYZ(i[, j][, k])"));
@@ -160,7 +160,12 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(vectorHost("TXYZ", 3, "TXYZ(i[, j][, k])"));
   c.push_back({"MAG", NameKind::VectorFunction, 1, 1, Builtin::Abs, 0.0, "MAG(v)"});
   c.push_back({"UV", NameKind::VectorFunction, 1, 1, Builtin::Abs, 0.0, "UV(v)"});
-  for (std::string_view n : {"UVX", "UVY", "UVZ", "TRANS"}) c.push_back(vectorName(n));
+  // Marker-axis vectors and frame changes (ADAMS Solver C++ help, UVX and TRANS): expanded
+  // into ORIENT(29, ...) direction cosines of the markers by the parser.
+  c.push_back({"UVX", NameKind::VectorFunction, 1, 2, Builtin::Abs, 0.0, "UVX(i[, k])"});
+  c.push_back({"UVY", NameKind::VectorFunction, 1, 2, Builtin::Abs, 0.0, "UVY(i[, k])"});
+  c.push_back({"UVZ", NameKind::VectorFunction, 1, 2, Builtin::Abs, 0.0, "UVZ(i[, k])"});
+  c.push_back({"TRANS", NameKind::VectorFunction, 2, 3, Builtin::Abs, 0.0, "TRANS(v, i[, j])"});
   return c;
 }
 

@@ -21,9 +21,9 @@ enum class NameKind {
   DataFunction,  // AKISPL, CUBSPL, CURVE: expression arguments and the id of model data
   Unsupported,   // recognised, refused with "not supported yet" (DELAY, AO, ...)
   VectorHost,    // DXYZ, VXYZ, ...: the three components of a host measure (DX, DY, DZ, ...)
-  VectorFunction,  // MAG(v), UV(v): functions of a vector
-  Vector,        // other vector functions (UVX, TRANS, ...): refused, not supported yet
+  VectorFunction,  // MAG(v), UV(v), TRANS(v, i[, j]), UVX/UVY/UVZ(i[, k]): vector functions
   User,          // USER(r1, ..., r30): constants for a user subroutine
+  Delay,         // DELAY(e_delayed, e_delay, e_history[, id]): reads the run's history
 };
 
 struct NameInfo {

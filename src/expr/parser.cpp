@@ -34,9 +34,9 @@ std::size_t editDistance(std::string_view a, std::string_view b) {
 bool isCallable(NameKind kind) {
   return kind == NameKind::Builtin || kind == NameKind::Conditional ||
          kind == NameKind::HostFunction || kind == NameKind::Unsupported ||
-         kind == NameKind::Vector || kind == NameKind::DataFunction ||
+         kind == NameKind::DataFunction ||
          kind == NameKind::VectorHost || kind == NameKind::VectorFunction ||
-         kind == NameKind::User;
+         kind == NameKind::User || kind == NameKind::Delay;
 }
 
 // The closest known name of the wanted sort, when it is close enough to be a likely typo.
@@ -106,7 +106,7 @@ SyntaxNode makeNode(NodeKind kind, int column, std::vector<SyntaxNode> children)
 // True when a subtree reads neither TIME nor the host nor model data.
 bool constantTree(const SyntaxNode& node) {
   if (node.kind == NodeKind::Time || node.kind == NodeKind::Host ||
-      node.kind == NodeKind::DataCall) {
+      node.kind == NodeKind::DataCall || node.kind == NodeKind::Delay) {
     return false;
   }
   for (const SyntaxNode& child : node.children) {
@@ -390,13 +390,6 @@ class Parser {
     return out;
   }
 
-  void vectorsNotSupported(int column, const std::string& what) {
-    fail(column, "vector function " + what + " " + atColumn(column) + " is not supported yet",
-         "The supported vector functions are DXYZ, VXYZ, WXYZ, ACCXYZ, WDTXYZ, FXYZ, TXYZ, MAG "
-         "and UV, with [a, b, c], +, -, * (dot product or scaling), / by a scalar and % (cross "
-         "product).");
-  }
-
   Value name() {
     const Token& token = advance();
     const NameInfo* info = findName(token.upper);
@@ -405,10 +398,6 @@ class Parser {
            "blank between " + token.upper + " and '(' " + atColumn(token.blankBeforeParen),
            "ADAMS does not accept a blank between a function name and its '('; write " +
                token.upper + "(...).");
-      return {};
-    }
-    if (info != nullptr && info->kind == NameKind::Vector) {
-      vectorsNotSupported(token.column, token.upper);
       return {};
     }
     if (token.callFollows) return call(token, info);
@@ -549,14 +538,13 @@ class Parser {
         return scalarValue(dataCall(nameToken, *info, args));
       case NameKind::User:
         return scalarValue(userCall(nameToken, *info, args));
+      case NameKind::Delay:
+        return scalarValue(delayCall(nameToken, *info, args));
       case NameKind::Unsupported:
         report(nameToken.column,
                nameToken.upper + " " + atColumn(nameToken.column) + " is not supported yet",
-               nameToken.upper == "DELAY"
-                   ? "DELAY needs the history of its argument over the run, which expressions "
-                     "cannot keep yet; model the delay with a DIFF (e.g. a Pade approximant)."
-                   : "This function is not available to expressions yet; see "
-                     "docs/expressions.md for the functions available.");
+               "This function is not available to expressions yet; see "
+               "docs/expressions.md for the functions available.");
         break;
       default:
         report(nameToken.column,
@@ -592,23 +580,100 @@ class Parser {
     return out;
   }
 
-  // MAG(v) = |v|; UV(v) = v / |v|.
+  // ORIENT(29, n, i[, j]): element n of the direction-cosine matrix R = A_jᵀ A_i, numbered
+  // down the columns, so elements 3c+1..3c+3 are axis c of marker i resolved in marker j.
+  // `ids` holds i and, when written, j; the call keeps the column of the function name.
+  SyntaxNode directionCosine(const Token& nameToken, int element, const std::vector<long>& ids) {
+    HostCall cosine{"ORIENT", {29, element}, nameToken.column};
+    cosine.args.insert(cosine.args.end(), ids.begin(), ids.end());
+    SyntaxNode node;
+    node.column = nameToken.column;
+    node.kind = NodeKind::Host;
+    node.hostIndex = hostIndex(std::move(cosine));
+    return node;
+  }
+
+  // The marker ids of UVX/UVY/UVZ(i[, k]) (from argument `first` on) or TRANS(v, i[, j]).
+  bool markerIds(const Token& nameToken, std::vector<Argument>& args, std::size_t first,
+                 std::vector<long>& ids) {
+    bool valid = true;
+    for (std::size_t k = first; k < args.size(); ++k) {
+      long id = 0;
+      if (args[k].isVector) {
+        report(args[k].column,
+               nameToken.upper + " argument " + std::to_string(k + 1) + " " +
+                   atColumn(args[k].column) + " is a vector, but it must be a marker id",
+               "Write " + std::string(findName(nameToken.upper)->usage) + ".");
+        valid = false;
+      } else if (!integerConstant(nameToken.upper, static_cast<int>(k) + 1, args[k], id)) {
+        valid = false;
+      } else {
+        ids.push_back(id);
+      }
+    }
+    return valid;
+  }
+
+  // UVX(i[, k]) = the x axis of marker i resolved in marker k (ground when k is omitted or 0);
+  // UVY and UVZ likewise (ADAMS Solver C++ help, UVX). Three direction cosines.
+  Value markerAxis(const Token& nameToken, std::vector<Argument>& args) {
+    Value out;
+    out.isVector = true;
+    std::vector<long> ids;
+    if (!markerIds(nameToken, args, 0, ids)) return out;
+    const int axis = nameToken.upper[2] - 'X';
+    for (int k = 0; k < 3; ++k) out.parts[k] = directionCosine(nameToken, 3 * axis + k + 1, ids);
+    return out;
+  }
+
+  // TRANS(v, i[, j]): v, written in the axes of marker j (ground when omitted or 0), resolved
+  // in the axes of marker i (ADAMS Solver C++ help, TRANS). Component c is UV{X,Y,Z}(i, j) * v.
+  Value transform(const Token& nameToken, std::vector<Argument>& args) {
+    Value out;
+    out.isVector = true;
+    std::vector<long> ids;
+    if (!markerIds(nameToken, args, 1, ids)) return out;
+    for (int c = 0; c < 3; ++c) {
+      std::array<SyntaxNode, 3> axis;
+      for (int k = 0; k < 3; ++k) axis[k] = directionCosine(nameToken, 3 * c + k + 1, ids);
+      out.parts[c] = dotProduct(axis, args[0].parts, nameToken.column);
+    }
+    return out;
+  }
+
+  // MAG(v) = |v|; UV(v) = v / |v|, and the zero vector where v is zero (no direction: ADAMS
+  // reuses the last valid one, docs/expressions.md); UVX/UVY/UVZ and TRANS above.
   Value vectorFunction(const Token& nameToken, const NameInfo& info,
                        std::vector<Argument>& args) {
-    if (!checkCount(nameToken, info, args.size())) return scalarValue(SyntaxNode{});
+    // A refused call still yields a placeholder of its kind (a vector except for MAG), so
+    // the error is reported once, not again as a vector/scalar mismatch around it.
+    Value refused;
+    refused.isVector = nameToken.upper != "MAG";
+    if (!checkCount(nameToken, info, args.size())) return refused;
+    if (nameToken.upper.size() == 3 && nameToken.upper.starts_with("UV")) {
+      return markerAxis(nameToken, args);
+    }
     if (!args[0].isVector) {
       report(args[0].column,
              nameToken.upper + " argument 1 " + atColumn(args[0].column) +
                  " is a scalar, but " + nameToken.upper + " takes a vector",
              "Pass a vector such as DXYZ(i, j) or [a, b, c]; for a scalar use ABS.");
-      return scalarValue(SyntaxNode{});
+      return refused;
     }
+    if (nameToken.upper == "TRANS") return transform(nameToken, args);
     SyntaxNode length = magnitude(args[0].parts, nameToken.column);
     if (nameToken.upper == "MAG") return scalarValue(std::move(length));
+    // IF(v*v : -, 0, v_k/|v|): v*v is never negative; the branch taken alone gives the value
+    // and the derivative, so the zero vector yields 0 with zero partials rather than 0/0.
+    const SyntaxNode lengthSquared = dotProduct(args[0].parts, args[0].parts, nameToken.column);
     Value out;
     out.isVector = true;
     for (int k = 0; k < 3; ++k) {
-      out.parts[k] = binary(NodeKind::Divide, nameToken.column, args[0].parts[k], length);
+      SyntaxNode zero = numberNode(0.0, nameToken.column);
+      out.parts[k] = makeNode(
+          NodeKind::If, nameToken.column,
+          {lengthSquared, zero, zero,
+           binary(NodeKind::Divide, nameToken.column, args[0].parts[k], length)});
     }
     return out;
   }
@@ -820,6 +885,60 @@ class Parser {
     return finishDataCall(std::move(call), std::move(args[0].node));
   }
 
+  // DELAY(e_delayed, e_delay, e_history[, id]): e_delayed at TIME - max(0, e_delay), read from
+  // the history the run records; e_history gives the values before the run's start and must
+  // be a function of TIME alone. The id of an interpolation-options ARRAY is not supported:
+  // only 0 (the default) is accepted. DELAY inside a DELAY argument is refused (its history
+  // would need a history of its own).
+  SyntaxNode delayCall(const Token& nameToken, const NameInfo& info, std::vector<Argument>& args) {
+    if (!checkCount(nameToken, info, args.size())) return SyntaxNode{};
+    bool valid = true;
+    if (args.size() == 4) {
+      long id = 0;
+      if (!integerConstant("DELAY", 4, args[3], id)) {
+        valid = false;
+      } else if (id != 0) {
+        report(args[3].column,
+               "DELAY argument 4 " + atColumn(args[3].column) + " names ARRAY/" +
+                   std::to_string(id) + " of interpolation options, which is not supported yet",
+               "Give 0 or omit the argument: OpenMSS interpolates the history with cubics "
+               "(docs/expressions.md, \"DELAY\").");
+        valid = false;
+      }
+    }
+    for (std::size_t k = 0; k < 3; ++k) {
+      if (!containsKind(args[k].node, NodeKind::Delay)) continue;
+      report(args[k].column,
+             "DELAY argument " + std::to_string(k + 1) + " " + atColumn(args[k].column) +
+                 " contains another DELAY, which is not supported",
+             "Delay a VARIABLE that holds the inner DELAY instead.");
+      valid = false;
+    }
+    if (containsKind(args[2].node, NodeKind::Host) ||
+        containsKind(args[2].node, NodeKind::DataCall)) {
+      report(args[2].column,
+             "DELAY argument 3 " + atColumn(args[2].column) +
+                 " (the history before the start) must be a function of TIME or a constant",
+             "Write the history with TIME, numbers and the general functions (STEP, SIN, ...), "
+             "without measures or SPLINE data.");
+      valid = false;
+    }
+    if (!valid) return SyntaxNode{};
+    SyntaxNode node = makeNode(NodeKind::Delay, nameToken.column,
+                               {std::move(args[0].node), std::move(args[1].node),
+                                std::move(args[2].node)});
+    node.delayIndex = delayCount_++;
+    return node;
+  }
+
+  static bool containsKind(const SyntaxNode& node, NodeKind kind) {
+    if (node.kind == kind) return true;
+    for (const SyntaxNode& child : node.children) {
+      if (containsKind(child, kind)) return true;
+    }
+    return false;
+  }
+
   bool integerConstant(const std::string& function, int position, const Argument& arg, long& out) {
     const std::string subject =
         function + " argument " + std::to_string(position) + " " + atColumn(arg.column);
@@ -882,6 +1001,7 @@ class Parser {
   std::vector<HostCall> hostCalls_;
   std::vector<DataCall> dataCalls_;
   std::optional<UserCall> user_;
+  std::size_t delayCount_ = 0;
 };
 
 }  // namespace

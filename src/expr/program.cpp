@@ -64,6 +64,7 @@ Program::Program(const Program& other)
       dataCalls_(other.dataCalls_),
       bindings_(other.bindings_),
       user_(other.user_),
+      delays_(other.delays_),
       code_(other.code_) {
   if (!fitsOnStack()) scratch_ = std::make_unique<Scratch>(code_);
 }
@@ -125,8 +126,18 @@ T hostNumber(const TimeJet& x) {
 }
 }  // namespace
 
+DelayLookup Program::delayedValue(std::uint32_t k, double delay, double time,
+                                  const RunContext* run) const {
+  const double s = time - delay;
+  const DelayCall& call = delays_[k];
+  const DelayHistory* h = run != nullptr ? run->delayHistory(call.delayed.get()) : nullptr;
+  if (h != nullptr && !h->empty() && s >= h->startTime()) return h->at(s);
+  const TimeJet before = call.history->evaluateTimeJet(s);
+  return {before.value, before.d1};
+}
+
 template <typename T, typename Host>
-T Program::forward(T* v, const Host* hostValues, const T& time) const {
+T Program::forward(T* v, const Host* hostValues, const T& time, const RunContext* run) const {
   const Instruction* code = code_.instructions.data();
   const std::uint32_t* operands = code_.operands.data();
   const auto count = static_cast<std::uint32_t>(code_.instructions.size());
@@ -190,26 +201,35 @@ T Program::forward(T* v, const Host* hostValues, const T& time) const {
         v[pc] = chain2(a, b, bindings_[ins.aux].partials(valueOf(a), valueOf(b)));
         break;
       }
+      case OpCode::Delay:
+        // Values only: jets (MOTION, GCON) are refused DELAY when the model is built.
+        if constexpr (std::is_same_v<T, double>) {
+          const double delay = v[in[1]];
+          v[pc] = delay > 0.0 ? delayedValue(ins.aux, delay, time, run).value : v[in[0]];
+        } else {
+          v[pc] = constant<T>(std::numeric_limits<double>::quiet_NaN());
+        }
+        break;
     }
     ++pc;
   }
   return v[code_.result];
 }
 
-double Program::evaluate(const double* hostValues, double time) const {
+double Program::evaluate(const double* hostValues, double time, const RunContext* run) const {
   if (fitsOnStack()) {
     double values[kStackSlots];
-    return forward(values, hostValues, time);
+    return forward(values, hostValues, time, run);
   }
   ScratchLease lease(*scratch_, code_);
-  return forward(lease.get().values.data(), hostValues, time);
+  return forward(lease.get().values.data(), hostValues, time, run);
 }
 
 // Forward sweep that also stores, for every executed instruction with operands, the partial
 // derivative of its value with respect to each operand, and records the executed order.
 double Program::forwardWithPartials(double* v, double* p, std::uint32_t* trace,
                                     std::uint32_t& traceLength, const double* hostValues,
-                                    double time) const {
+                                    double time, const RunContext* run) const {
   const Instruction* code = code_.instructions.data();
   const std::uint32_t* operands = code_.operands.data();
   const auto count = static_cast<std::uint32_t>(code_.instructions.size());
@@ -322,6 +342,25 @@ double Program::forwardWithPartials(double* v, double* p, std::uint32_t* trace,
         if (ins.operandCount > 1) partial[1] = g.gb;
         break;
       }
+      case OpCode::Delay: {
+        // A positive delay reads the past only: no partial with respect to e_delayed (the
+        // current state); d/d(delay) = -slope of the history at TIME - delay. A delay <= 0
+        // is taken as 0 (ADAMS): the value is e_delayed itself.
+        const double delay = v[in[1]];
+        if (delay > 0.0) {
+          const DelayLookup past = delayedValue(ins.aux, delay, time, run);
+          v[pc] = past.value;
+          partial[0] = 0.0;
+          partial[1] = -past.slope;
+          partial[2] = past.slope;
+        } else {
+          v[pc] = v[in[0]];
+          partial[0] = 1.0;
+          partial[1] = 0.0;
+          partial[2] = 0.0;
+        }
+        break;
+      }
     }
     trace[traceLength++] = pc;
     ++pc;
@@ -356,26 +395,28 @@ void Program::backward(const double* p, double* adjoints, const std::uint32_t* t
 
 double Program::evaluateDerivatives(double* values, double* partials, double* adjoints,
                                     std::uint32_t* trace, const double* hostValues, double time,
-                                    double* dHost, double* dTime) const {
+                                    double* dHost, double* dTime, const RunContext* run) const {
   std::uint32_t traceLength = 0;
-  const double value = forwardWithPartials(values, partials, trace, traceLength, hostValues, time);
+  const double value =
+      forwardWithPartials(values, partials, trace, traceLength, hostValues, time, run);
   backward(partials, adjoints, trace, traceLength, dHost, dTime);
   return value;
 }
 
-double Program::evaluate(const double* hostValues, double time, double* dHost,
-                         double* dTime) const {
+double Program::evaluate(const double* hostValues, double time, double* dHost, double* dTime,
+                         const RunContext* run) const {
   if (fitsOnStack()) {
     double values[kStackSlots];
     double partials[kStackPartials];
     double adjoints[kStackSlots];
     std::uint32_t trace[kStackSlots];
-    return evaluateDerivatives(values, partials, adjoints, trace, hostValues, time, dHost, dTime);
+    return evaluateDerivatives(values, partials, adjoints, trace, hostValues, time, dHost, dTime,
+                               run);
   }
   ScratchLease lease(*scratch_, code_);
   Scratch& s = lease.get();
   return evaluateDerivatives(s.values.data(), s.partials.data(), s.adjoints.data(), s.trace.data(),
-                             hostValues, time, dHost, dTime);
+                             hostValues, time, dHost, dTime, run);
 }
 
 TimeJet Program::evaluateTimeJet(double time) const {

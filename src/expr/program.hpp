@@ -28,6 +28,7 @@
 #include "expr/data_functions.hpp"
 #include "expr/expression.hpp"
 #include "expr/jet.hpp"
+#include "expr/run_context.hpp"
 
 namespace openmss::expr {
 
@@ -46,6 +47,7 @@ enum class OpCode : std::uint8_t {
   Jump,      // to instruction aux
   Join,      // operands e2, e3, e4 roots and the Branch; takes the value of the chosen root
   DataCall,  // AKISPL/CUBSPL (operands x, z) or CURVE (operand alpha); data binding aux
+  Delay,     // DELAY: operands e_delayed, e_delay, TIME; delay call aux (Program::DelayCall)
 };
 
 // A data call bound to its data. The shared pointers keep the data alive; evaluation goes
@@ -131,8 +133,9 @@ class Program {
   bool dependsOnTime() const { return code_.usesTime; }
   std::size_t instructionCount() const { return code_.instructions.size(); }
 
-  double evaluate(const double* hostValues, double time) const;
-  double evaluate(const double* hostValues, double time, double* dHost, double* dTime) const;
+  double evaluate(const double* hostValues, double time, const RunContext* run = nullptr) const;
+  double evaluate(const double* hostValues, double time, double* dHost, double* dTime,
+                  const RunContext* run = nullptr) const;
   TimeJet evaluateTimeJet(double time) const;
   TimeJet evaluateJet(const TimeJet* hostJets, double time) const;
 
@@ -143,6 +146,16 @@ class Program {
   void bindSpline(std::size_t call, std::shared_ptr<const Spline> spline);
   void bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve);
 
+  // DELAY call k: its e_delayed as a program of its own (over this program's host values, so
+  // the run can record it at accepted states) and its e_history (TIME only). Shared by copies:
+  // both are immutable, and the e_delayed program's address is the key of the call's history.
+  struct DelayCall {
+    std::shared_ptr<const Program> delayed;
+    std::shared_ptr<const Program> history;
+  };
+  void setDelayCalls(std::vector<DelayCall> calls) { delays_ = std::move(calls); }
+  const std::vector<DelayCall>& delayCalls() const { return delays_; }
+
   static constexpr std::size_t kStackSlots = 256;
   static constexpr std::size_t kStackPartials = 512;
 
@@ -151,15 +164,20 @@ class Program {
   class ScratchLease;
 
   template <typename T, typename Host>
-  T forward(T* values, const Host* hostValues, const T& time) const;
+  T forward(T* values, const Host* hostValues, const T& time,
+            const RunContext* run = nullptr) const;
   double forwardWithPartials(double* values, double* partials, std::uint32_t* trace,
-                             std::uint32_t& traceLength, const double* hostValues,
-                             double time) const;
+                             std::uint32_t& traceLength, const double* hostValues, double time,
+                             const RunContext* run) const;
+  // DELAY call k at TIME `time` with a positive delay: the recorded history at time - delay,
+  // or e_history there when that is before the history's start (or there is none).
+  DelayLookup delayedValue(std::uint32_t k, double delay, double time,
+                           const RunContext* run) const;
   void backward(const double* partials, double* adjoints, const std::uint32_t* trace,
                 std::uint32_t traceLength, double* dHost, double* dTime) const;
   double evaluateDerivatives(double* values, double* partials, double* adjoints,
                              std::uint32_t* trace, const double* hostValues, double time,
-                             double* dHost, double* dTime) const;
+                             double* dHost, double* dTime, const RunContext* run) const;
   bool fitsOnStack() const;
 
   std::string text_;
@@ -167,6 +185,7 @@ class Program {
   std::vector<DataCall> dataCalls_;
   std::vector<DataBinding> bindings_;  // bindings_[k] serves dataCalls_[k]
   std::optional<UserCall> user_;
+  std::vector<DelayCall> delays_;
   ProgramCode code_;
   std::unique_ptr<Scratch> scratch_;  // only for programs too large for the stack arrays
 };

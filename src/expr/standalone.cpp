@@ -33,6 +33,12 @@ bool evaluateStandalone(const std::string& text, double time, double* value, dou
                 "Use numbers, constants, TIME and functions such as STEP or POLY.");
     return false;
   }
+  if (expression.delayCount() > 0) {
+    diags.error(where, "",
+                "DELAY needs the history of a run, and the calculator evaluates one instant",
+                "Evaluate the delayed expression at TIME - delay instead.");
+    return false;
+  }
   double derivative = 0.0;
   const double result = expression.evaluate(nullptr, time, nullptr, &derivative);
   if (value != nullptr) *value = result;

@@ -23,6 +23,8 @@ enum class NodeKind {
   If,        // IF(e1 : e2, e3, e4), children in that order
   DataCall,  // AKISPL, CUBSPL, CURVE: children are the real arguments (x[, z] or alpha),
              // dataIndex refers to the parser's list of data calls
+  Delay,     // DELAY(e_delayed, e_delay, e_history): children in that order; delayIndex
+             // numbers the DELAY calls of the expression from 0 in order of appearance
 };
 
 struct SyntaxNode {
@@ -32,6 +34,7 @@ struct SyntaxNode {
   Builtin builtin = Builtin::Abs;  // Call
   std::size_t hostIndex = 0;       // Host
   std::size_t dataIndex = 0;       // DataCall
+  std::size_t delayIndex = 0;      // Delay
   std::vector<SyntaxNode> children;
 };
 

@@ -14,18 +14,20 @@
 namespace openmss::mechanics {
 
 // Expression value on the scalar T: the chain rule through the host measures for duals.
+// `run` supplies the history DELAY reads (expression_run_state.hpp).
 template <class T>
 T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
-                std::vector<double>& values, std::vector<double>& grad) {
+                std::vector<double>& values, std::vector<double>& grad,
+                const ExpressionRunState* run = nullptr) {
   const size_t n = b.measures.size();
   values.resize(n);
   grad.resize(n);
   if constexpr (std::is_same_v<T, double>) {
-    return b.expression.evaluate(hostValues, t);
+    return b.expression.evaluate(hostValues, t, run);
   } else {
     for (size_t k = 0; k < n; ++k) values[k] = valueOf(hostValues[k]);
     double dTime = 0.0;
-    const double v = b.expression.evaluate(values.data(), t, grad.data(), &dTime);
+    const double v = b.expression.evaluate(values.data(), t, grad.data(), &dTime, run);
     T out(v);
     out.d = 0.0 * hostValues[0].d;  // zero of the right type
     for (size_t k = 0; k < n; ++k) out.d = out.d + grad[k] * hostValues[k].d;
@@ -35,11 +37,13 @@ T evaluateBound(const model::BoundExpression& b, const T* hostValues, double t,
 
 // The function's value at state y: its measures evaluated on T, then the expression.
 // Accelerations and reactions (dynamic_measures.hpp) come from `reads`: the residual passes
-// y' and the constraint set; without it they read as zero.
+// y' and the constraint set; without it they read as zero. `run` is the analysis's run state
+// (cumulative angles, DELAY history); without it those read as at the start of a run.
 template <class T>
 T evaluateFunction(const model::Model& m, const StateLayout& l, const model::BoundExpression& f,
                    double t, const T* y, std::vector<double>& scratchValues,
-                   std::vector<double>& scratchGrad, const DynamicReads<T>* reads = nullptr) {
+                   std::vector<double>& scratchGrad, const DynamicReads<T>* reads = nullptr,
+                   const ExpressionRunState* run = nullptr) {
   const size_t n = f.measures.size();
   T host[16];
   std::vector<T> big;
@@ -49,14 +53,14 @@ T evaluateFunction(const model::Model& m, const StateLayout& l, const model::Bou
     hv = big.data();
   }
   for (size_t k = 0; k < n; ++k)
-    if (!kinematicMeasure(m, l, f.measures[k], y, &hv[k]) &&
+    if (!kinematicMeasure(m, l, f.measures[k], y, &hv[k], run) &&
         !dynamicMeasure(m, l, f.measures[k], y, reads, &hv[k]))
       hv[k] = T(0.0);  // kinds the model builder refuses in functions; never uninitialised
   if (n == 0) {
     T zero(0.0);
-    return evaluateBound(f, &zero, t, scratchValues, scratchGrad);
+    return evaluateBound(f, &zero, t, scratchValues, scratchGrad, run);
   }
-  return evaluateBound(f, hv, t, scratchValues, scratchGrad);
+  return evaluateBound(f, hv, t, scratchValues, scratchGrad, run);
 }
 
 }  // namespace openmss::mechanics

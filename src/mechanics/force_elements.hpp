@@ -71,7 +71,7 @@ class ForceElements {
   template <class T>
   T sforceValue(int k, double t, const T* y, const DynamicReads<T>* reads = nullptr) const {
     return evaluateFunction(*model_, layout_, model_->sforces[k].function, t, y,
-                            scratchValues_, scratchGrad_, reads);
+                            scratchValues_, scratchGrad_, reads, run_);
   }
 
   // The relative rotation about zJ of a rotational SPRINGDAMPER's markers, unwrapped about the
@@ -104,6 +104,10 @@ class ForceElements {
   std::vector<ForceElementRef> elements_;
   std::vector<double> angleReference_;  // per SPRINGDAMPER (rotational ones only)
   mutable std::vector<double> scratchValues_, scratchGrad_;
+  const ExpressionRunState* run_ = nullptr;  // cumulative angles, DELAY history (the session's)
+
+ public:
+  void setRunState(const ExpressionRunState* run) { run_ = run; }
 };
 
 // ---- implementation of the templates ----
@@ -237,7 +241,7 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
   T c[6];
   for (int n = 0; n < 6; ++n)
     c[n] = f.components[n] ? evaluateFunction(*model_, layout_, *f.components[n], t, y,
-                                              scratchValues_, scratchGrad_, reads)
+                                              scratchValues_, scratchGrad_, reads, run_)
                            : T(0.0);
   ElementLoads<T> l;
   l.hasForce = f.kind != model::VectorForce::Kind::VTorque;

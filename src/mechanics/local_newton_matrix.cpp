@@ -60,7 +60,10 @@ LocalNewtonMatrix::LocalNewtonMatrix(const MultibodySystem& system,
     : system_(system), patternStamp_(pattern.stamp), nonZeros_(pattern.nonZeros()) {
   // Dense rows (a repair, or a dependency the pattern rules could not resolve) mean some
   // contribution is not known element by element: colour the whole residual instead.
-  usable_ = pattern.denseRows == 0 && pattern.size == system.layout().size();
+  // A pattern larger by one row and column per constraint equation carries the SI2 terms.
+  const StateLayout& l = system.layout();
+  stabilised_ = l.constraintEquations > 0 && pattern.size == l.size() + l.constraintEquations;
+  usable_ = pattern.denseRows == 0 && (pattern.size == l.size() || stabilised_);
   if (usable_) planBodies(pattern);
   if (usable_) planEquations(pattern);
   if (usable_) planForceAndUser(pattern);
@@ -129,7 +132,80 @@ void LocalNewtonMatrix::planEquations(const JacobianPattern& p) {
         for (int j = 0; j < 7 * n; ++j) add(row, column(j));
         add(row, lambda);
       }
+    if (stabilised_) planStabilisation(p, k, plan);
     equations_.push_back(plan);
+  }
+}
+
+void LocalNewtonMatrix::planStabilisation(const JacobianPattern& p, int equation,
+                                          EquationPlan& plan) {
+  const StateLayout& l = system_.layout();
+  const int velocityRow = l.size() + equation;  // also eta's column
+  const int n = plan.bodyCount;
+  plan.stabilisedIndex = static_cast<int>(stabilisedIndex_.size());
+  auto column = [&](int j) { return l.body(plan.bodies[j / 7]) + j % 7; };  // r then e
+  auto add = [&](int row, int col) {
+    const int v = find(p, row, col);
+    if (v < 0) usable_ = false;
+    stabilisedIndex_.push_back(v);
+  };
+  add(velocityRow, velocityRow);
+  for (int j = 0; j < 7 * n; ++j) add(velocityRow, column(j));
+  for (int i = 0; i < n; ++i)
+    for (int r = 0; r < 6; ++r)
+      add(velocityRow, l.body(plan.bodies[i]) + (r < 3 ? L::kV + r : L::kW + r - 3));
+  for (int i = 0; i < n; ++i)
+    for (int r = 0; r < 7; ++r) {
+      const int row = l.body(plan.bodies[i]) + L::kR + r;  // r rows, then e rows
+      for (int j = 0; j < 7 * n; ++j) add(row, column(j));
+      add(row, velocityRow);
+    }
+}
+
+template <class S>
+void LocalNewtonMatrix::stabilisationChunk(const EquationPlan& plan, int slot, const S* out,
+                                           int base, int last, double* values) const {
+  const int n = plan.bodyCount, directions = 7 * n;
+  const int* index = &stabilisedIndex_[static_cast<size_t>(plan.stabilisedIndex)];
+  const int* velocityRow = index + 1;  // positions, then velocities
+  const int* kinematicRows = index + 1 + directions + 6 * n;
+  const int stride = directions + 1;
+  const double* q = state_ + system_.layout().body(plan.bodies[slot]);
+  const double u[6] = {q[L::kV], q[L::kV + 1], q[L::kV + 2],
+                       q[L::kW], q[L::kW + 1], q[L::kW + 2]};
+  // Velocity form C u: its position derivatives u . dC/dq, and C itself in the velocity columns.
+  for (int j = base; j < last; ++j) {
+    double sum = 0.0;
+    for (int r = 0; r < 6; ++r) sum += u[r] * Seeds<S>::get(out[r], j - base);
+    values[velocityRow[j]] += sum;
+  }
+  if (base == 0)
+    for (int r = 0; r < 6; ++r)
+      values[velocityRow[directions + 6 * slot + r]] += Seeds<S>::value(out[r]);
+  // r' = v - C_r^T eta: the kinematic row r - v + C_r^T eta.
+  for (int r = 0; r < 3; ++r) {
+    const int* row = kinematicRows + (7 * slot + r) * stride;
+    for (int j = base; j < last; ++j) values[row[j]] += eta_ * Seeds<S>::get(out[r], j - base);
+    if (base == 0) values[row[directions]] += Seeds<S>::value(out[r]);
+  }
+  // e' = E(e) (w - C_pi^T eta) / 2 + mu e: the row gains E(e) C_pi^T eta / 2, which depends on
+  // the body's own e as well (seeded where the chunk holds its directions).
+  S e[4];
+  for (int k = 0; k < 4; ++k) {
+    e[k] = S(q[L::kE + k]);
+    const int j = 7 * slot + 3 + k;
+    if (j >= base && j < last) Seeds<S>::at(e[k], j - base) = 1.0;
+  }
+  const S* o = out + 3;
+  const S g[4] = {-(e[1] * o[0]) - e[2] * o[1] - e[3] * o[2],
+                  e[0] * o[0] - e[3] * o[1] + e[2] * o[2],
+                  e[3] * o[0] + e[0] * o[1] - e[1] * o[2],
+                  -(e[2] * o[0]) + e[1] * o[1] + e[0] * o[2]};
+  for (int r = 0; r < 4; ++r) {
+    const int* row = kinematicRows + (7 * slot + 3 + r) * stride;
+    for (int j = base; j < last; ++j)
+      values[row[j]] += 0.5 * eta_ * Seeds<S>::get(g[r], j - base);
+    if (base == 0) values[row[directions]] += 0.5 * Seeds<S>::value(g[r]);
   }
 }
 
@@ -315,6 +391,7 @@ void LocalNewtonMatrix::equationChunk(const ConstraintEquation& eq, const Equati
       // The multiplier's column: the gradient itself (once, with the first chunk).
       if (base == 0) values[row[directions]] += Seeds<S>::value(out[r]);
     }
+    if (stabilised_) stabilisationChunk(plan, i, out, base, last, values);
   }
 }
 
@@ -326,15 +403,19 @@ void LocalNewtonMatrix::assemble(double t, const Eigen::VectorXd& y, const Eigen
   bodyBlocks(y, cj, values);
   kinematics(y);
   seeded_.markerCount = -1;  // a new state
+  state_ = y.data();
   const auto& eqs = system_.constraints().equations();
   for (size_t k = 0; k < equations_.size(); ++k) {
     const ConstraintEquation& eq = eqs[k];
     const EquationPlan& plan = equations_[k];
     if (!eq.active) {
       values[index_[static_cast<size_t>(plan.index)]] += 1.0;  // row lambda_k = lambda_k
+      if (stabilised_)  // and row eta_k = eta_k
+        values[stabilisedIndex_[static_cast<size_t>(plan.stabilisedIndex)]] += 1.0;
       continue;
     }
     const double lambda = y(l.lambda(static_cast<int>(k)));
+    if (stabilised_) eta_ = y(n + static_cast<int>(k));
     const int directions = 7 * plan.bodyCount;
     if (plan.bodyCount == 0) continue;  // between ground markers: a constant row
     if (MultibodySystem::hasAnalyticGradient(eq))

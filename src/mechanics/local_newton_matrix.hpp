@@ -13,6 +13,11 @@
 // Every entry lands in the values of the full pattern through indices found once, when the plan
 // is made. A pattern this cannot serve (dense rows, after a repair or for a dependency the
 // pattern does not resolve) makes usable() false: the caller then colours the whole residual.
+//
+// Planned on a pattern of size layout().size() + constraintEquations (si2_newton_pattern.hpp) it
+// also fills the stabilised index-2 rows and columns (analysis/multibody_dae_si2.hpp): the
+// velocity form C u of each equation and the multiplier eta's terms C_r^T eta and
+// E(e) C_pi^T eta / 2 in the kinematic rows, from the same seeded gradients as C^T lambda.
 
 #include <cstdint>
 #include <vector>
@@ -36,6 +41,8 @@ class LocalNewtonMatrix {
   static constexpr int kChunk = 14;
 
   bool usable() const { return usable_; }
+  // Planned with the SI2 rows and columns (a pattern of size + constraintEquations).
+  bool stabilised() const { return stabilised_; }
   std::uint64_t patternStamp() const { return patternStamp_; }
   // Overwrites values (the pattern's nonzeros, column-major) with the Newton matrix; work's dual
   // vectors serve the compressed passes of the force elements and user equations.
@@ -49,12 +56,18 @@ class LocalNewtonMatrix {
     int bodyCount = 0;
     int slot[6];       // per marker side: index into bodies, -1 for ground
     int index = 0;     // first of this equation's value indices in index_
+    int stabilisedIndex = 0;  // first of its SI2 value indices in stabilisedIndex_
   };
   // Value index of (row, column) in the pattern, -1 when the pattern lacks it.
   static int find(const JacobianPattern& pattern, int row, int column);
   void planBodies(const JacobianPattern& pattern);
   void planEquations(const JacobianPattern& pattern);
   void planForceAndUser(const JacobianPattern& pattern);
+  void planStabilisation(const JacobianPattern& pattern, int equation, EquationPlan& plan);
+  // The SI2 entries of one side's gradient `out` (body slot i) over the chunk's directions.
+  template <class S>
+  void stabilisationChunk(const EquationPlan& plan, int slot, const S* out, int base, int last,
+                          double* values) const;
   void bodyBlocks(const Eigen::VectorXd& y, double cj, double* values) const;
   void kinematics(const Eigen::VectorXd& y);
   template <class S>
@@ -68,6 +81,13 @@ class LocalNewtonMatrix {
   std::uint64_t patternStamp_ = 0;
   int nonZeros_ = 0;
   bool usable_ = true;
+  bool stabilised_ = false;
+  // SI2 only. Per equation: (eta, eta); the velocity-form row over the 7 n position and the 6 n
+  // velocity columns; the 7 kinematic rows (r, e) of each body over the 7 n position columns
+  // and eta (7 n + 1 each). The state and eta of the equation being assembled:
+  std::vector<int> stabilisedIndex_;
+  const double* state_ = nullptr;
+  double eta_ = 0.0;
   std::vector<int> bodyIndex_;      // kBodyEntries per body
   std::vector<EquationPlan> equations_;
   // Per equation: (lambda, lambda); the value row over the 7 n position columns; the 6 n force

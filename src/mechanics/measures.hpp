@@ -8,6 +8,7 @@
 #include "mechanics/orientation_measure.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/analysis_status_measures.hpp"
+#include "mechanics/expression_run_state.hpp"
 #include "mechanics/user_measures.hpp"
 #include "model/measure.hpp"
 
@@ -23,10 +24,11 @@ MarkerState<T> markerOrGround(const model::Model& m, const StateLayout& l, int m
 }
 
 // Position- and velocity-level measures. Returns false for kinds that need accelerations or
-// reaction forces (those are evaluated by the output code from a solved state).
+// reaction forces (those are evaluated by the output code from a solved state). `run` holds
+// the references of the cumulative AX, AY, AZ (without it they are principal values).
 template <class T>
 bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::Measure& ms,
-                      const T* y, T* out) {
+                      const T* y, T* out, const ExpressionRunState* run = nullptr) {
   using K = model::MeasureKind;
   if (userMeasure(m, l, ms, y, out)) return true;  // VARVAL, DIF, ARYVAL, ... read the state
   if (analysisStatusMeasure(m, ms, out)) return true;  // MODE, HSIZE, ORDER, NJAC, NRHS
@@ -75,6 +77,18 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
       const V3<T> kp = markerOrGround(m, l, ms.k, y).p;
       const V3<T> a = j.p - i.p, b = kp - j.p;
       *out = acosOf(dot(a, b) / (norm(a) * norm(b)));
+      return true;
+    }
+    case K::AX: case K::AY: case K::AZ: {
+      // Cumulative (docs/theory.md §11a): the digest §3.6 principal angle plus the whole turns
+      // counted from the run's last accepted value.
+      const M3<T>& ai = i.a;
+      const M3<T>& aj = j.a;
+      const T principal =
+          ms.kind == K::AX   ? atan2Of(-dot(ai.c[2], aj.c[1]), dot(ai.c[2], aj.c[2]))
+          : ms.kind == K::AY ? atan2Of(dot(ai.c[2], aj.c[0]), dot(ai.c[2], aj.c[2]))
+                             : atan2Of(dot(ai.c[0], aj.c[1]), dot(ai.c[0], aj.c[0]));
+      *out = cumulativeAngle(principal, run != nullptr ? run->angleReference(ms) : nullptr);
       return true;
     }
     case K::Orient:  // on any scalar, so force functions get its derivatives

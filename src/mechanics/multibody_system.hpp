@@ -30,6 +30,15 @@ class MultibodySystem {
 
   const model::Model& model() const { return *model_; }
   const StateLayout& layout() const { return layout_; }
+  // The history expressions read (cumulative AX/AY/AZ, DELAY): owned by the analysis, which
+  // updates it after accepted steps (expression_run_state.hpp). nullptr: none (principal
+  // angles, DELAY reads its e_history).
+  void setRunState(const ExpressionRunState* run) {
+    runState_ = run;
+    forces_.setRunState(run);
+    user_.setRunState(run);
+  }
+  const ExpressionRunState* runState() const { return runState_; }
   const ConstraintSet& constraints() const { return constraints_; }
   ConstraintSet& constraints() { return constraints_; }
 
@@ -204,6 +213,7 @@ class MultibodySystem {
                   Eigen::Vector3d& torque) const;
 
   const model::Model* model_;
+  const ExpressionRunState* runState_ = nullptr;
   StateLayout layout_;
   ConstraintSet constraints_;
   std::vector<double> mass_;               // per body, divided by UCF

@@ -90,6 +90,18 @@ bool orientValue(const M3<T>& r, int code, int component, T* out) {
     *out = eulerParameterOf(r, component - 1);
     return true;
   }
+  // Code 28 (funcs): Rodriguez parameters e_k / e0, components 1-3, as RCNVRT defines them
+  // (infinite at a half turn, where e0 = 0). Code 29: direction cosine n (1-9) of r, numbered
+  // down the columns as RCNVRT's COSINES array, so 1-3 are the x axis of I resolved in J.
+  // UVX/UVY/UVZ and TRANS expand into code 29 (docs/expressions.md, "ORIENT codes").
+  if (code == 28) {
+    *out = eulerParameterOf(r, component) / eulerParameterOf(r, 0);
+    return true;
+  }
+  if (code == 29) {
+    *out = r.at((component - 1) % 3, (component - 1) / 3);
+    return true;
+  }
   // Codes 25 and 26 (expr4): AX, AY, AZ as principal angles and YAW, PITCH, ROLL (PITCH the
   // negated second 3-2-1 angle), as those functions define them (docs/expressions.md).
   if (code == 25) {

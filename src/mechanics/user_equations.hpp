@@ -47,6 +47,10 @@ class UserEquations {
   StateLayout layout_;
   GeneralStateRows gse_;
   mutable std::vector<double> scratchValues_, scratchGrad_;
+  const ExpressionRunState* run_ = nullptr;  // cumulative angles, DELAY history (the session's)
+
+ public:
+  void setRunState(const ExpressionRunState* run) { run_ = run; }
 };
 
 template <class T>
@@ -58,14 +62,14 @@ void UserEquations::addToResidual(double t, const T* y, const T* yp, T* g,
   const int nv = static_cast<int>(m.variables.size());
   for (int k = 0; k < nv; ++k) {
     const T f = evaluateFunction(m, l, m.variables[k].function, t, y, scratchValues_,
-                                 scratchGrad_, &reads);
+                                 scratchGrad_, &reads, run_);
     g[l.userAlg(k)] = y[l.userAlg(k)] - f;
   }
   for (int k = 0; k < static_cast<int>(m.diffs.size()); ++k) {
     const int state = l.userDiff(k), rate = l.userAlg(nv + k);
     g[state] = yp[state] - y[rate];
     const T f = evaluateFunction(m, l, m.diffs[k].function, t, y, scratchValues_, scratchGrad_,
-                                 &reads);
+                                 &reads, run_);
     g[rate] = m.diffs[k].implicit ? f : y[rate] - f;
   }
   for (const model::LinearStateElement& e : m.linearStates) {

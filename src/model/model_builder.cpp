@@ -220,6 +220,14 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
     return false;
   }
   bool ok = true;
+  if (forConstraint && out.expression.delayCount() > 0) {
+    // DELAY reads the run's history (expression_run_state.hpp); a constraint equation must
+    // be a function of the configuration alone, and its second derivatives need jets.
+    diags.error(where, subject, "DELAY is not supported in GCON functions yet",
+                "Constrain a VARIABLE-free geometric expression; DELAY is supported in forces, "
+                "VARIABLE, DIFF, REQUEST and SENSOR functions.");
+    ok = false;
+  }
   out.measures.clear();
   for (const auto& call : out.expression.hostCalls()) {
     SourceLocation at = where;
@@ -276,11 +284,8 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
         fail("time derivatives in a moving frame (the l argument) are not supported yet",
              "Omit the last argument or give 0 so derivatives are taken in ground.");
       if (m.i == -1) fail("the first marker is required", "Give the id of the measured marker.");
-      if (!forConstraint &&
-          (m.kind == MeasureKind::AX || m.kind == MeasureKind::AY || m.kind == MeasureKind::AZ))
-        fail("cumulative angles (with angle wrapping) are supported in GCON only so far",
-             "Use ATAN2 of marker axes products or ORIENT for a principal angle; see "
-             "docs/expressions.md.");
+      // AX, AY, AZ: cumulative outside GCON (the run state counts the turns,
+      // mechanics/expression_run_state.hpp); principal values in a GCON.
     } else if (call.name == "ORIENT") {
       m.kind = MeasureKind::Orient;
       m.code = call.args.size() > 0 ? static_cast<int>(call.args[0]) : 0;
@@ -288,14 +293,16 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       m.i = marker(2, false);
       m.j = marker(3, true);
       const bool known = (m.code == 27 && m.component >= 1 && m.component <= 4) ||
-                         (m.code >= 1 && m.code <= 26 && m.component >= 1 && m.component <= 3);
+                         (m.code == 29 && m.component >= 1 && m.component <= 9) ||
+                         (m.code >= 1 && m.code <= 28 && m.component >= 1 && m.component <= 3);
       if (!known)
         fail("orientation code " + std::to_string(m.code) + " component " +
                  std::to_string(m.component) + " is not supported yet",
              "Use codes 1-12 (body-fixed sequences 1-2-3, 2-3-1, 3-1-2, 1-3-2, 2-1-3, 3-2-1, "
              "1-2-1, 1-3-1, 2-1-2, 2-3-2, 3-1-3, 3-2-3), 13-24 (the same sequences space-fixed), "
              "25 (AX, AY, AZ principal values), 26 (YAW, PITCH, ROLL), all with components 1-3, "
-             "or 27 (Euler parameters, 1-4).");
+             "27 (Euler parameters, 1-4), 28 (Rodriguez parameters, 1-3) or 29 (direction "
+             "cosines, 1-9).");
     } else if (call.name == "INCANG") {
       m.kind = MeasureKind::IncludedAngle;
       m.i = marker(0, false);
@@ -370,6 +377,13 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
            "are not supported yet in force, VARIABLE or DIFF functions",
            "Use it in a REQUEST; JOINT, JPRIM and MOTION reactions and accelerations are "
            "supported here.");
+    // The run records DELAY arguments at accepted states from the measures force functions
+    // can read (expression_run_state.cpp), so an expression with DELAY may not read forces.
+    if (out.expression.delayCount() > 0 && m.needsDynamics() &&
+        !readsAccelerationOrReaction(m.kind))
+      fail("force read-backs are not supported yet in an expression with DELAY",
+           "Read the force in a VARIABLE-free expression, or delay a JOINT/JPRIM/MOTION "
+           "reaction or an acceleration instead.");
     out.measures.push_back(m);
   }
   return ok;
@@ -935,6 +949,14 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
     if (!expr::Expression::parse(f->expression, f->valueWhere, s->subject(), diags, m.function))
       continue;
     if (!bindDataCalls(model, m.function, f->valueWhere, s->subject(), diags)) continue;
+    if (m.function.delayCount() > 0) {
+      // A motion needs exact velocity and acceleration (time jets) of its function; the
+      // recorded DELAY history gives neither yet.
+      diags.error(f->valueWhere, s->subject(), "DELAY is not supported in MOTION functions yet",
+                  "Write the delayed motion directly as a function of TIME (e.g. "
+                  "SIN(TIME-0.5) for DELAY(SIN(TIME), 0.5, 0)).");
+      continue;
+    }
     if (!m.function.hostCalls().empty()) {
       diags.error(f->valueWhere, s->subject(),
                   "a MOTION function may depend on TIME only, but it calls " +

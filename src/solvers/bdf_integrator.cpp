@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <utility>
 
 namespace openmss::solvers {
 namespace {
@@ -28,6 +30,22 @@ constexpr double kStalledChange = 1e-1;
 constexpr double kRoundOffUlps = 1000.0;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
+// Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
+// share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
+// as many at every further detection.
+constexpr double kStabilityShrink = 0.7;
+constexpr long kFirstStabilityBar = 50;
+// ... or, at orders 3 and 4 (kGrowthTopOrder), whose estimates of orders k-1 and k both grow
+// by more than kGrowthFactor over kGrowthWindow steps at one step size and order, at rates
+// within kGrowthAgreement of each other: one mode growing geometrically behind both (even
+// window: a mode near h*omega = pi alternates in sign from step to step). Measured on the
+// 100-link planar chain (docs/integrators.md): a window of 8 and a factor of 1.5 caught the
+// growth too late at ERROR = 1e-4; the test at orders 5-6 as well cost 100x in tip error at
+// 1e-6, where those orders damp the resolved modes and the estimates grow with the physics.
+constexpr int kGrowthWindow = 6;
+constexpr double kGrowthFactor = 1.25;
+constexpr int kGrowthTopOrder = 4;
+constexpr double kGrowthAgreement = 1.3;
 
 // Weights of the value (w) and derivative (dw) at x of the polynomial through (nodes, values):
 // p(x) = sum w_j y_j, p'(x) = sum dw_j y_j. x must differ from every node.
@@ -74,8 +92,16 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   yp_ = yp0;
   ts_.assign(1, t0);
   ys_.assign(1, y0);
+  diagonal_.assign(1, y0);
+  previousDiagonal_.clear();
   k_ = 1;
   stepsAtOrder_ = 0;
+  lowOrderStep_ = 0.0;
+  highOrderBarredUntil_ = 0;
+  stabilityBar_ = 0;
+  stabilityLimitDetections_ = 0;
+  heldLow_.clear();
+  heldOwn_.clear();
   h_ = settings_.hinit > 0 ? settings_.hinit : 1e-3;
   h_ = std::min(h_, settings_.hmax);
   for (auto* v : {&yNew_, &ypNew_, &yPred_, &base_, &g_, &dy_, &predictorDiff_, &errorWeight_,
@@ -257,15 +283,35 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       ++stats_.residualEvaluations;
       dy_ = rowScale_.cwiseProduct(g_);
       solver_->solve(dy_);
-      dy_.array() *= colScale_.array();
-      // A Jacobian formed at another cj approximates cj dG/dy': rescale the step (DASSL).
-      if (cjJacobian_ != cj) dy_ *= 2.0 / (1.0 + cj / cjJacobian_);
-      yNew_ -= dy_;
-      const double size = weightedNorm(dy_, correctorWeight_);
-      noteWorst(g_, dy_);
+      // One pass over the unknowns after the solve: unscale the change, rescale it when the
+      // Jacobian was formed at another cj (it approximates cj dG/dy'; DASSL's factor), apply
+      // it, and take the weighted maximum norms of the change (size) and of the distance from
+      // the predictor (for the convergence target). The same operations in the same order as
+      // separate vector passes, so the same bits; a NaN anywhere makes size NaN.
+      const bool rescale = cjJacobian_ != cj;
+      const double cjFactor = rescale ? 2.0 / (1.0 + cj / cjJacobian_) : 1.0;
+      double size = 0.0, fromPredictor = 0.0;
+      bool nonFinite = false;
+      for (Eigen::Index i = 0; i < dy_.size(); ++i) {
+        double d = dy_(i) * colScale_(i);
+        if (rescale) d *= cjFactor;
+        dy_(i) = d;
+        const double yi = yNew_(i) - d;
+        yNew_(i) = yi;
+        const double change = std::abs(d * correctorWeight_(i));
+        nonFinite = nonFinite || std::isnan(change);
+        size = std::max(size, change);
+        fromPredictor = std::max(fromPredictor, std::abs((yi - yPred_(i)) * correctorWeight_(i)));
+      }
+      if (nonFinite) size = std::numeric_limits<double>::quiet_NaN();
       if (!std::isfinite(size)) break;  // a NaN or infinite residual: this attempt failed
-      notifyIteration({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
-                       lastWorstChange_});
+      // The worst residual and change are for observers (EPRINT) and for the failure report
+      // (noted when an attempt fails, below); not computed per iteration otherwise.
+      if (observingIterations()) {
+        noteWorst(g_, dy_);
+        notifyIteration({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
+                         lastWorstChange_});
+      }
       if (it > 0) rate = size / std::max(previous, 1e-300);
       previous = size;
       // Converged when the remaining change, about rate / (1 - rate) times the last one, is
@@ -279,10 +325,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         break;
       }
       if (it > 0 && rate < 0.9) {
-        predictorDiff_ = yNew_ - yPred_;
-        const double target = std::max(
-            kTightChange,
-            kCorrectorShare * errorRatio * weightedNorm(predictorDiff_, correctorWeight_));
+        const double target =
+            std::max(kTightChange, kCorrectorShare * errorRatio * fromPredictor);
         if (rate / (1.0 - rate) * size <= target) {
           converged = true;
           break;
@@ -298,6 +342,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     }
     if (converged) break;
     if (jacobianCurrent_ || attempt == 1) {
+      noteWorst(g_, dy_);
       *newtonFailed = true;
       return false;
     }
@@ -307,26 +352,36 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   predictorDiff_ = yNew_ - yPred_;
   *errorNorm = errorRatio * weightedNorm(predictorDiff_, errorWeight_);
   if (!std::isfinite(*errorNorm)) {
+    noteWorst(g_, dy_);
     *newtonFailed = true;
     return false;
   }
+  if (*errorNorm > 1.0) noteWorst(g_, dy_);  // for the failure report, should the step fail
   return *errorNorm <= 1.0;
 }
 
 double BdfIntegrator::orderErrorEstimate(int q, double h) const {
   // Local error of order q at step h from the (q+1)-th divided difference of the last q+2
-  // solutions: LTE ~ q! h^(q+1) |y[q+1 points...]|. Needs q+2 history points.
-  const int need = q + 2;
-  if (static_cast<int>(ts_.size()) < need) return -1.0;
-  std::vector<Eigen::VectorXd>& dd = divided_;  // reused: no allocation once sized
-  dd.resize(static_cast<size_t>(need));
-  for (int j = 0; j < need; ++j) dd[j] = ys_[j];
-  for (int level = 1; level < need; ++level)
-    for (int j = 0; j < need - level; ++j)
-      dd[j] = (dd[j] - dd[j + 1]) / (ts_[j] - ts_[j + level]);
+  // solutions: LTE ~ q! h^(q+1) |y[q+2 points]|. Needs q+2 history points.
+  if (static_cast<int>(diagonal_.size()) < q + 2) return -1.0;
   double fact = 1.0;
   for (int m = 2; m <= q; ++m) fact *= m;
-  return fact * std::pow(h, q + 1) * weightedNorm(dd[0], errorWeight_);
+  return fact * std::pow(h, q + 1) *
+         weightedNorm(diagonal_[static_cast<size_t>(q + 1)], errorWeight_);
+}
+
+void BdfIntegrator::updateDivided() {
+  // y[t_n..t_n-l] = (y[t_n..t_n-l+1] - y[t_n-1..t_n-l]) / (t_n - t_n-l): the last factor is
+  // the previous step's diagonal at level l-1. The same operations, in the same order, as the
+  // full table, so the estimates are unchanged to the last bit.
+  const int levels = std::min(static_cast<int>(ts_.size()), settings_.kmax + 3);
+  std::swap(diagonal_, previousDiagonal_);
+  diagonal_.resize(static_cast<size_t>(levels));
+  diagonal_[0] = ys_[0];
+  for (int l = 1; l < levels; ++l) {
+    const size_t u = static_cast<size_t>(l);
+    diagonal_[u] = (diagonal_[u - 1] - previousDiagonal_[u - 1]) / (ts_[0] - ts_[u]);
+  }
 }
 
 bool BdfIntegrator::step(double tout) {
@@ -402,12 +457,14 @@ bool BdfIntegrator::step(double tout) {
       ts_.pop_back();
       ys_.pop_back();
     }
+    updateDivided();
     ++stats_.steps;
     ++stepsAtOrder_;
     jacobianCurrent_ = false;
 
     // Next order and step: compare the error estimates of orders k-1, k, k+1.
     double ratio = 0.9 * std::pow(1.0 / std::max(err, 1e-10), 1.0 / (k_ + 1));
+    const double ownRatio = ratio;
     int nextK = k_;
     if (stepsAtOrder_ > k_ + 1) {
       const double eLow = k_ > 1 ? orderErrorEstimate(k_ - 1, h) : -1.0;
@@ -432,8 +489,60 @@ bool BdfIntegrator::step(double tout) {
       // Leave the start-up order as soon as history allows.
       nextK = 2;
     }
+    // Stability limit of orders >= 3 (docs/integrators.md, "Order selection"). On an undamped
+    // mode BDF3 and BDF4 grow the amplitude at every step, BDF5 and BDF6 in a band of h*omega
+    // around 1-3; only orders 1-2 damp every such mode. A mode the error test had left below
+    // the tolerance then grows until it holds the step, which shrinks step after step while
+    // the solution itself does not change character. Detected early as the growth of the
+    // order k-1 and k estimates at a held step (orders 3-4, kGrowthWindow), late as the step of
+    // an order >= 3 falling below kStabilityShrink of the last one order 2 took: the order
+    // drops to 2 (which damps the mode) and stays there for a bar that doubles at every
+    // detection, so that a
+    // model whose higher orders pay gets them back and one that keeps failing at them stops
+    // paying for retries.
+    const bool shortened = h < std::min(h_, settings_.hmax);  // landed on an output time
+    bool stabilityJump = false;
+    bool modeGrowing = false;
+    if (k_ >= 3 && k_ <= kGrowthTopOrder && !shortened && stepsAtOrder_ > 1 &&
+        h == stats_.stepSize) {
+      heldLow_.push_back(orderErrorEstimate(k_ - 1, h));
+      heldOwn_.push_back(orderErrorEstimate(k_, h));
+      if (static_cast<int>(heldOwn_.size()) > kGrowthWindow + 1) {
+        heldLow_.pop_front();
+        heldOwn_.pop_front();
+      }
+      if (static_cast<int>(heldOwn_.size()) == kGrowthWindow + 1 && heldLow_.front() > 0 &&
+          heldOwn_.front() > 0) {
+        const double gLow = heldLow_.back() / heldLow_.front();
+        const double gOwn = heldOwn_.back() / heldOwn_.front();
+        modeGrowing = gLow > kGrowthFactor && gOwn > kGrowthFactor &&
+                      std::max(gLow, gOwn) < kGrowthAgreement * std::min(gLow, gOwn);
+      }
+    } else {
+      heldLow_.clear();
+      heldOwn_.clear();
+    }
+    if (!shortened) {
+      if (k_ <= 2) {
+        lowOrderStep_ = h;
+      } else if (h < kStabilityShrink * lowOrderStep_ || modeGrowing) {
+        nextK = 2;
+        // Back to order 2's step, which damps the grown mode (kept when growth was caught).
+        ratio = modeGrowing ? 1.0 : lowOrderStep_ / h;
+        heldLow_.clear();
+        heldOwn_.clear();
+        ++stabilityLimitDetections_;
+        stabilityJump = true;
+        stabilityBar_ = stabilityBar_ == 0 ? kFirstStabilityBar : 2 * stabilityBar_;
+        highOrderBarredUntil_ = stats_.steps + stabilityBar_;
+      }
+    }
+    if (nextK > 2 && nextK > k_ && stats_.steps < highOrderBarredUntil_) {
+      nextK = k_;
+      ratio = ownRatio;
+    }
     if (nextK != k_) { k_ = nextK; stepsAtOrder_ = 0; }
-    if (ratio >= 1.5) h_ = h * std::min(ratio, 2.0);
+    if (ratio >= 1.5) h_ = h * std::min(ratio, stabilityJump ? ratio : 2.0);
     else if (ratio < 1.0) h_ = h * std::max(ratio, 0.5);
     else h_ = std::max(h, h_);
     h_ = std::min(h_, settings_.hmax);

@@ -61,6 +61,9 @@ class BdfIntegrator final : public Integrator {
   // The corrector polynomial of the last step (order k through the last k+1 solutions).
   void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
   const IntegratorStatistics& statistics() const override { return stats_; }
+  // How often an order >= 3 was abandoned because the step it held shrank below the one order 2
+  // had taken: the signature of an undamped mode that the order amplifies.
+  long stabilityLimitDetections() const { return stabilityLimitDetections_; }
   const IntegratorFailure& failure() const override { return failure_; }
 
   // Problems with at least this many unknowns that offer a sparse Newton matrix are solved with
@@ -81,7 +84,12 @@ class BdfIntegrator final : public Integrator {
   // unknown at yNew_ (kRoundOffUlps in the .cpp): a stalled iteration there has converged.
   bool withinRoundOff(double cj);
   void noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy);
+  // Local error estimate of order q at step h from the divided-difference diagonal of the
+  // accepted history (diagonal_); -1 when the history is too short.
   double orderErrorEstimate(int q, double h) const;
+  // Extends diagonal_ by the newest accepted solution (ys_[0] at ts_[0]): one vector operation
+  // per level instead of the full table per estimate.
+  void updateDivided();
 
   DaeProblem& problem_;
   BdfSettings settings_;
@@ -96,6 +104,16 @@ class BdfIntegrator final : public Integrator {
   int k_ = 1;
   int stepsAtOrder_ = 0;
   int lastStepOrder_ = 1;  // order of the last accepted step (its interpolant)
+  // Stability-limit detection for orders >= 3 (docs/integrators.md, "Order selection"): the
+  // last step accepted at order <= 2, the step count up to which orders >= 3 stay barred after
+  // a detection, and the length of the next bar (doubled at every detection).
+  double lowOrderStep_ = 0.0;
+  long highOrderBarredUntil_ = 0;
+  long stabilityBar_ = 0;
+  long stabilityLimitDetections_ = 0;
+  // Error estimates of orders k-1 and k over the run of steps taken at the current order with
+  // one unchanged step size (oldest first; at most kGrowthWindow + 1 entries).
+  std::deque<double> heldLow_, heldOwn_;
 
   // Newton matrix and its factorisation, kept while they serve: dense, or sparse on the
   // problem's fixed pattern (sparse_), factorised by solver_.
@@ -116,7 +134,9 @@ class BdfIntegrator final : public Integrator {
   // error test (error-controlled unknowns) and for the corrector's convergence test.
   Eigen::VectorXd errorWeight_, correctorWeight_;
   int consecutiveErrorFailures_ = 0;
-  mutable std::vector<Eigen::VectorXd> divided_;  // orderErrorEstimate's work vectors
+  // diagonal_[l] = y[t_n, ..., t_n-l], the divided differences through the newest l+1 accepted
+  // solutions (l <= KMAX+2); previousDiagonal_ is the one of the step before (work storage).
+  std::vector<Eigen::VectorXd> diagonal_, previousDiagonal_;
   std::vector<Eigen::VectorXd> equallySpaced_;     // fixed-coefficient history (GSTIFF)
   Eigen::VectorXd rowScale_, colScale_;
   double cjJacobian_ = 0.0;

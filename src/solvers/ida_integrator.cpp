@@ -9,6 +9,9 @@
 #include <sundials/sundials_context.h>
 #include <sundials/sundials_linearsolver.h>
 #include <sunmatrix/sunmatrix_dense.h>
+#include <sunmatrix/sunmatrix_sparse.h>
+
+#include "solvers/klu_linear_solver.hpp"
 
 namespace openmss::solvers {
 
@@ -30,6 +33,13 @@ struct IdaIntegrator::Engine {
   Eigen::MatrixXd jac;
   double cj = 1.0;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu;
+  // The sparse path (a sparse problem of BdfIntegrator::kSparseThreshold unknowns or more):
+  // the problem's sparse Newton matrix, balanced in place and factored by KLU. IDA is then
+  // given a 1-entry sparse SUNMatrix it only ever zeroes: the matrix lives here.
+  bool sparse = false;
+  Eigen::SparseMatrix<double> sparseJac;
+  KluLinearSolver klu;
+  bool kluFactored = false;
   Eigen::VectorXd rowScale, colScale, yWork, ypWork, gWork, rhs;
   long jacobianEvaluations = 0;
   std::string lastMessage;
@@ -62,13 +72,19 @@ struct IdaIntegrator::Engine {
     auto* e = static_cast<Engine*>(user);
     e->yWork = view(y);
     e->ypWork = view(yp);
-    e->problem->newtonMatrix(t, e->yWork, e->ypWork, cj, e->jac);
     e->cj = cj;
     ++e->jacobianEvaluations;
+    if (e->sparse) {
+      e->problem->newtonMatrixSparse(t, e->yWork, e->ypWork, cj, e->sparseJac);
+      const Eigen::Map<const Eigen::VectorXd> values(e->sparseJac.valuePtr(),
+                                                     e->sparseJac.nonZeros());
+      return values.allFinite() ? 0 : 1;
+    }
+    e->problem->newtonMatrix(t, e->yWork, e->ypWork, cj, e->jac);
     return e->jac.allFinite() ? 0 : 1;
   }
 
-  // The linear solver: IDA's dense matrix is never filled; the Newton matrix from jacobian()
+  // The linear solver: IDA's SUNMatrix is never filled; the Newton matrix from jacobian()
   // is factored as R J C with R = diag(cj^rowScaleExponent), C = diag(cj^unknownScaleExponent)
   // (DaeProblem), so that the constraint rows and multiplier columns of an index-3 system keep
   // their pivots when cj = O(1/h) is large. Solutions are mapped back: x = C (R J C)^-1 R b.
@@ -78,12 +94,21 @@ struct IdaIntegrator::Engine {
   static int initialize(SUNLinearSolver) { return SUNLS_SUCCESS; }
   static int setup(SUNLinearSolver s, SUNMatrix) {
     Engine* e = of(s);
-    const Eigen::Index n = e->jac.rows();
+    const Eigen::Index n = e->sparse ? e->sparseJac.rows() : e->jac.rows();
     e->rowScale.resize(n);
     e->colScale.resize(n);
     for (int i = 0; i < n; ++i) {
       e->rowScale(i) = std::pow(e->cj, e->problem->rowScaleExponent(i));
       e->colScale(i) = std::pow(e->cj, e->problem->unknownScaleExponent(i));
+    }
+    if (e->sparse) {
+      // The matrix is formed anew at every setup (IDA calls the Jacobian first), so it is
+      // scaled in place.
+      for (int c = 0; c < e->sparseJac.outerSize(); ++c)
+        for (Eigen::SparseMatrix<double>::InnerIterator it(e->sparseJac, c); it; ++it)
+          it.valueRef() *= e->rowScale(it.row()) * e->colScale(c);
+      e->kluFactored = e->klu.factor(e->sparseJac);
+      return e->kluFactored ? SUNLS_SUCCESS : SUNLS_LUFACT_FAIL;
     }
     e->lu.compute(e->rowScale.asDiagonal() * e->jac * e->colScale.asDiagonal());
     const Eigen::VectorXd pivots = e->lu.matrixLU().diagonal().cwiseAbs();
@@ -94,7 +119,13 @@ struct IdaIntegrator::Engine {
     Engine* e = of(s);
     e->rhs = e->rowScale.cwiseProduct(view(b));
     auto out = view(x);
-    out = e->colScale.cwiseProduct(e->lu.solve(e->rhs));
+    if (e->sparse) {
+      if (!e->kluFactored) return SUNLS_PACKAGE_FAIL_REC;
+      e->klu.solve(e->rhs);
+      out = e->colScale.cwiseProduct(e->rhs);
+    } else {
+      out = e->colScale.cwiseProduct(e->lu.solve(e->rhs));
+    }
     return out.allFinite() ? SUNLS_SUCCESS : SUNLS_PACKAGE_FAIL_REC;
   }
   static sunindextype lastFlag(SUNLinearSolver) { return 0; }
@@ -172,7 +203,14 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   IDASetId(e.ida, e.id);
   IDASetSuppressAlg(e.ida, SUNTRUE);
 
-  e.matrix = SUNDenseMatrix(n, n, e.context);
+  e.sparse = problem_.sparse() && n >= BdfIntegrator::kSparseThreshold;
+  if (e.sparse) {
+    e.sparseJac = *problem_.pattern();
+    e.klu.analyze(e.sparseJac);
+    e.matrix = SUNSparseMatrix(n, n, 1, CSC_MAT, e.context);
+  } else {
+    e.matrix = SUNDenseMatrix(n, n, e.context);
+  }
   e.linear = SUNLinSolNewEmpty(e.context);
   e.linear->content = &e;
   e.linear->ops->gettype = &Engine::type;

@@ -111,6 +111,7 @@ class Integrator {
     if (stepObserver_) stepObserver_(info, stepObserverUser_);
   }
   bool observingSteps() const { return stepObserver_ != nullptr; }
+  bool observingIterations() const { return iterationObserver_ != nullptr; }
 
  private:
   void (*iterationObserver_)(const IterationInfo&, void*) = nullptr;

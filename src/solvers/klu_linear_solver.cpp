@@ -20,6 +20,18 @@ KluLinearSolver::~KluLinearSolver() {
   delete impl_;
 }
 
+long KluLinearSolver::factorNonZeros() const {
+  return impl_->numeric ? static_cast<long>(impl_->numeric->lnz) + impl_->numeric->unz : 0;
+}
+
+void KluLinearSolver::setOptions(const Options& options) {
+  impl_->common.ordering = options.ordering;
+  impl_->common.btf = options.btf ? 1 : 0;
+  impl_->common.tol = options.pivotTolerance;
+  columnStart_.clear();  // the next factor() analyses anew
+  rowIndex_.clear();
+}
+
 void KluLinearSolver::release() {
   if (impl_->numeric) klu_free_numeric(&impl_->numeric, &impl_->common);
   if (impl_->symbolic) klu_free_symbolic(&impl_->symbolic, &impl_->common);

@@ -25,6 +25,18 @@ class KluLinearSolver final : public LinearSolver {
   // Factorisations with fresh pivoting and with the previous pivot sequence.
   int fullFactorizations() const { return full_; }
   int refactorizations() const { return refactor_; }
+  // Entries of the L and U factors of the last factorisation (the fill; a solve reads each once).
+  long factorNonZeros() const;
+
+  // KLU's ordering choices, applied at the next analyze(): fill-reducing ordering AMD (0) or
+  // COLAMD (1), block triangular form first, the partial-pivoting tolerance (a diagonal entry is
+  // kept as pivot when at least this fraction of the column's largest).
+  struct Options {
+    int ordering = 0;
+    bool btf = true;
+    double pivotTolerance = 1e-3;
+  };
+  void setOptions(const Options& options);
 
  private:
   bool samePattern(const Eigen::SparseMatrix<double>& m) const;

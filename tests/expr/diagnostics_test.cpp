@@ -113,11 +113,8 @@ TEST(ExpressionDiagnostics, HostCallArgumentsMustBeIntegerConstants) {
 }
 
 TEST(ExpressionDiagnostics, FunctionsStillNotSupported) {
-  // DELAY needs run history; AO's definition was not found (docs/expressions.md).
-  EXPECT_EQ(errorOf("2*DELAY(TIME, 1, 0)"),
-            "model.adm:12:22: error: SFORCE/104: DELAY at column 3 of the expression is not "
-            "supported yet. DELAY needs the history of its argument over the run, which "
-            "expressions cannot keep yet; model the delay with a DIFF (e.g. a Pade approximant).");
+  // AO's definition was not found (docs/expressions.md); DELAY is supported now and its
+  // input errors are tested in delay_test.cpp.
   for (const char* name : {"AO", "FXFREQ", "FXMODE"}) {
     const std::string message = errorOf(std::string(name) + "(1, 2)");
     EXPECT_NE(message.find(std::string(name) + " at column 1 of the expression is not "
@@ -132,9 +129,21 @@ TEST(ExpressionDiagnostics, VectorMisuse) {
             "model.adm:12:20: error: SFORCE/104: the expression is a vector at column 1 of the "
             "expression, but a function must be a scalar. Reduce it to a scalar with MAG(v), a "
             "dot product v*w, or a component function (DX, VX, ...).");
+  // UVX is a vector now (a marker axis): alone it is the "vector function" error, and its
+  // arguments are marker ids, so a vector or a fraction there is refused at its column.
   EXPECT_EQ(errorOf("UVX(1)").substr(0, 94),
-            "model.adm:12:20: error: SFORCE/104: vector function UVX at column 1 of the "
-            "expression is not s");
+            "model.adm:12:20: error: SFORCE/104: the expression is a vector at column 1 of the "
+            "expression, ");
+  EXPECT_NE(errorOf("UVX(1)*TRANS(DXYZ(1), [1,0,0])")
+                .find("TRANS argument 2 at column 23 of the expression is a vector, but it must "
+                      "be a marker id"),
+            std::string::npos);
+  EXPECT_NE(errorOf("UVY(1.5)*DXYZ(1)").find("UVY argument 1 at column 5"), std::string::npos);
+  EXPECT_NE(errorOf("TRANS(1, 2)*DXYZ(1)")
+                .find("TRANS argument 1 at column 7 of the expression is a scalar, but TRANS "
+                      "takes a vector"),
+            std::string::npos);
+  EXPECT_NE(errorOf("UVZ(1, 2, 3)*DXYZ(1)").find("UVZ takes 1 to 2"), std::string::npos);
   EXPECT_EQ(errorOf("DX(1)%DX(2)"),
             "model.adm:12:25: error: SFORCE/104: '%' needs a vector on both sides at column 6 of "
             "the expression. '%' is the cross product of two vectors; use '*' for scalars.");

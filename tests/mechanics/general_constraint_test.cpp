@@ -180,11 +180,9 @@ TEST(Gcon, DataSetChecks) {
   EXPECT_NE(e.find("(GCOSUB) is not supported yet"), std::string::npos) << e;
   e = errorsOf(base + "GCON/1, FUNCTION=2.5\nEND\n");
   EXPECT_NE(e.find("the FUNCTION reads no marker"), std::string::npos) << e;
-  // Outside a GCON, AX/AY/AZ need their cumulative form, which is not there yet.
+  // Outside a GCON, AX/AY/AZ are cumulative (mechanics/expression_run_state.hpp) and accepted.
   e = errorsOf(base + "SFORCE/1, ROTATION, I=21, J=11, FUNCTION=-AZ(21,11)\nEND\n");
-  EXPECT_NE(e.find("AZ: cumulative angles (with angle wrapping) are supported in GCON only"),
-            std::string::npos)
-      << e;
+  EXPECT_EQ(e.find("AZ"), std::string::npos) << e;
 }
 
 }  // namespace

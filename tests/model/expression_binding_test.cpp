@@ -35,7 +35,7 @@ std::vector<std::string> buildErrors(const std::string& body) {
   return lines;
 }
 
-TEST(ExpressionBinding, OrientCodesOneToTwentySevenAreAccepted) {
+TEST(ExpressionBinding, OrientCodesOneToTwentyNineAreAccepted) {
   std::string body;
   int id = 1;
   for (int code = 1; code <= 26; ++code) {
@@ -43,10 +43,29 @@ TEST(ExpressionBinding, OrientCodesOneToTwentySevenAreAccepted) {
             ",1,20,10)\\F3=ORIENT(" + std::to_string(code) + ",3,20)\n";
   }
   body += "REQUEST/99, F2=ORIENT(27,4,20,10)\n";
+  // Codes 28 (Rodriguez, 1-3) and 29 (direction cosines, 1-9), added by funcs.
+  body += "REQUEST/100, F2=ORIENT(28,3,20,10)\\F3=ORIENT(29,9,20)\\F4=ORIENT(29,1,20,0)\n";
   EXPECT_TRUE(buildErrors(body).empty());
-  const std::vector<std::string> errors = buildErrors("REQUEST/1, F2=ORIENT(28,1,20)\n");
-  ASSERT_EQ(errors.size(), 1u);
-  EXPECT_NE(errors[0].find("ORIENT: orientation code 28 component 1 is not supported yet"),
+  const std::vector<std::string> errors =
+      buildErrors("REQUEST/1, F2=ORIENT(30,1,20)\\F3=ORIENT(29,10,20)\\F4=ORIENT(28,4,20)\n");
+  ASSERT_EQ(errors.size(), 3u);
+  EXPECT_NE(errors[0].find("ORIENT: orientation code 30 component 1 is not supported yet"),
+            std::string::npos)
+      << errors[0];
+  EXPECT_NE(errors[1].find("code 29 component 10"), std::string::npos) << errors[1];
+  EXPECT_NE(errors[2].find("code 28 component 4"), std::string::npos) << errors[2];
+}
+
+TEST(ExpressionBinding, MarkerAxesAndTransBindTheirMarkers) {
+  // UVX/UVY/UVZ and TRANS expand into ORIENT(29, ...): their markers are checked by the model
+  // builder, and an unknown one is reported at the column of the function that names it.
+  EXPECT_TRUE(
+      buildErrors("VARIABLE/1, FUNCTION=UVX(20,10)*TRANS(DXYZ(20,10),20)+UVZ(20)*UVY(20,0)\n")
+          .empty());
+  const std::vector<std::string> errors =
+      buildErrors("VARIABLE/1, FUNCTION=UVX(20)*TRANS(DXYZ(20,10),20,77)\n");
+  ASSERT_FALSE(errors.empty());
+  EXPECT_NE(errors[0].find("m.adm:6:30: error: VARIABLE/1: ORIENT: marker 77 does not exist"),
             std::string::npos)
       << errors[0];
 }

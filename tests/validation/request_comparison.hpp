@@ -79,8 +79,15 @@ constexpr double kRequestFloorShare = 1.0e-2;
 // printed digit scores at most 1e-3 (it matters for columns that barely move off a value).
 constexpr double kPrintedDigitsShare = 1.0e-2;
 // Within this many degrees of theta = 0 or 180, psi and phi of a 3-1-3 set are not separately
-// defined; only psi + phi (theta = 0) or psi - phi (theta = 180) is.
-constexpr double kGimbalLockDegrees = 1.0e-3;
+// defined; only psi + phi (theta = 0) or psi - phi (theta = 180) is. Near the lock an
+// orientation difference d moves psi and phi by up to d / sin(theta): two runs that agree in
+// orientation to 1e-5 rad (the positions of the 5 s validation runs agree to about 5e-4 m on a
+// 2 m arm) may print psi 180 degrees apart when theta is below about 0.01 degree (measured:
+// Spherical_Case01, WSTIFF SI2, t = 3.39 s, theta 0.0011 against ADAMS's 0.014 degree, psi and
+// phi swapped between +90 and -90 with psi + phi equal). 0.1 degree leaves psi and phi each a
+// factor sin(0.1 deg) = 1.7e-3 of conditioning, so only their defined combination is compared
+// below it.
+constexpr double kGimbalLockDegrees = 1.0e-1;
 constexpr double kRadiansPerDegree = 3.14159265358979323846 / 180.0;
 
 inline double wrappedDegrees(double difference) {
@@ -178,7 +185,10 @@ inline void accumulateErrors(const RequestSeries& reference, const RequestSeries
     if (reference.kind == RecordKind::Displacement) {
       for (std::size_t c = 3; c < 6; ++c)
         errors[c] = errorMagnitude(wrappedDegrees(ours[c] - ref[c]));
-      if (const int lock = gimbalLock(ref); lock != 0 && reference.hasColumn[4]) {
+      // Locked when either run is near the lock: the other may sit just outside the threshold.
+      const int refLock = gimbalLock(ref);
+      if (const int lock = refLock != 0 ? refLock : gimbalLock(ours);
+          lock != 0 && reference.hasColumn[4]) {
         // Only the sum (theta = 0) or difference (theta = 180) of psi and phi is defined.
         const double sign = static_cast<double>(lock);
         const double combined =
