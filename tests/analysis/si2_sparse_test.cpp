@@ -20,6 +20,7 @@
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/ida_integrator.hpp"
 #include "support/random_state.hpp"
+#include "support/dense_only_problem.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -230,31 +231,6 @@ struct Chain {
   }
 };
 
-// The SI2 problem with its sparse matrix hidden: the integrators take their dense paths.
-class DenseOnly final : public solvers::DaeProblem {
- public:
-  explicit DenseOnly(MultibodyDaeSi2& inner) : inner_(inner) {}
-  int size() const override { return inner_.size(); }
-  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                Eigen::VectorXd& g) override {
-    inner_.residual(t, y, yp, g);
-  }
-  void newtonMatrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
-                    Eigen::MatrixXd& jac) override {
-    inner_.newtonMatrix(t, y, yp, cj, jac);
-  }
-  bool differential(int i) const override { return inner_.differential(i); }
-  bool errorControlled(int i) const override { return inner_.errorControlled(i); }
-  int rowScaleExponent(int i) const override { return inner_.rowScaleExponent(i); }
-  int unknownScaleExponent(int i) const override { return inner_.unknownScaleExponent(i); }
-  Role role(int i) const override { return inner_.role(i); }
-  std::string equationName(int row) const override { return inner_.equationName(row); }
-  std::string variableName(int i) const override { return inner_.variableName(i); }
-
- private:
-  MultibodyDaeSi2& inner_;
-};
-
 // Largest difference over the unknowns under error control (SI2: positions and velocities). IDA
 // tests convergence in its weighted norm, where the multipliers weigh nothing (their tolerance is
 // 1e20, ida_integrator.cpp): they are converged only as far as the controlled unknowns need, and
@@ -272,7 +248,7 @@ double controlledDifference(const MultibodyDaeSi2& dae, const Eigen::VectorXd& a
 TEST(Si2SparseIntegration, DstiffKluPathFollowsTheDenseLuPath) {
   Chain chain(8);
   MultibodyDaeSi2 sparseDae(*chain.system);
-  DenseOnly denseDae(sparseDae);
+  openmss::testing::DenseOnlyProblem denseDae(sparseDae);
   ASSERT_GE(sparseDae.size(), solvers::BdfIntegrator::kSparseThreshold);
   solvers::IdaSettings settings;
   settings.error = 1e-6;
@@ -294,7 +270,7 @@ TEST(Si2SparseIntegration, DstiffKluPathFollowsTheDenseLuPath) {
 TEST(Si2SparseIntegration, GstiffSi2KluPathFollowsTheDenseLuPath) {
   Chain chain(8);
   MultibodyDaeSi2 sparseDae(*chain.system);
-  DenseOnly denseDae(sparseDae);
+  openmss::testing::DenseOnlyProblem denseDae(sparseDae);
   solvers::BdfSettings settings;
   settings.error = 1e-6;
   settings.hmax = 0.01;

@@ -23,6 +23,7 @@
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/dense_linear_solver.hpp"
 #include "solvers/klu_linear_solver.hpp"
+#include "support/dense_only_problem.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -251,30 +252,6 @@ TEST(SparseNewtonMatrix, GuardFindsEntriesOutsideATooSparsePattern) {
   EXPECT_LE((Eigen::MatrixXd(jac) - dense).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + dense.cwiseAbs().maxCoeff()));
 }
 
-// The multibody DAE with the sparse matrix hidden: the integrator takes its dense path.
-class DenseOnly final : public solvers::DaeProblem {
- public:
-  explicit DenseOnly(MultibodyDae& inner) : inner_(inner) {}
-  int size() const override { return inner_.size(); }
-  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                Eigen::VectorXd& g) override {
-    inner_.residual(t, y, yp, g);
-  }
-  void newtonMatrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
-                    Eigen::MatrixXd& jac) override {
-    inner_.newtonMatrix(t, y, yp, cj, jac);
-  }
-  bool differential(int i) const override { return inner_.differential(i); }
-  bool errorControlled(int i) const override { return inner_.errorControlled(i); }
-  int rowScaleExponent(int i) const override { return inner_.rowScaleExponent(i); }
-  int unknownScaleExponent(int i) const override { return inner_.unknownScaleExponent(i); }
-  std::string equationName(int row) const override { return inner_.equationName(row); }
-  std::string variableName(int i) const override { return inner_.variableName(i); }
-
- private:
-  MultibodyDae& inner_;
-};
-
 TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
   // A planar revolute chain above the sparse threshold, integrated for 0.3 s from a consistent
   // state both ways. (Not the chain with every coupling: its spherical links make it so
@@ -292,7 +269,7 @@ TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
   settings.error = 1e-6;
   settings.hmax = 0.01;
   MultibodyDae sparseDae(s);
-  DenseOnly denseDae(sparseDae);
+  openmss::testing::DenseOnlyProblem denseDae(sparseDae);
   {
     // The problem's own matrices at the start, through the DaeProblem interface.
     Eigen::SparseMatrix<double> a = *sparseDae.pattern();
