@@ -13,7 +13,7 @@ namespace {
 int usage() {
   std::cerr << "Usage:\n"
                "  openmss-generate KIND N               ADAMS data set on standard output\n"
-               "  openmss-generate acf DATASET OUTPUT END STEPS ERROR\n"
+               "  openmss-generate acf DATASET OUTPUT END STEPS ERROR [INTEGRATOR]\n"
                "                                        command file on standard output\n"
                "KIND: chain-planar | chain-spatial | fourbar | bushing; N: links (loops for "
                "fourbar)\n";
@@ -25,9 +25,9 @@ int usage() {
 int main(int argc, char** argv) {
   using namespace openmss::bench;
   try {
-    if (argc == 7 && std::string(argv[1]) == "acf") {
+    if ((argc == 7 || argc == 8) && std::string(argv[1]) == "acf") {
       std::cout << chainAcf(argv[2], argv[3], std::stod(argv[4]), std::stoi(argv[5]),
-                            std::stod(argv[6]));
+                            std::stod(argv[6]), argc == 8 ? argv[7] : "GSTIFF");
       return 0;
     }
     if (argc != 3) return usage();

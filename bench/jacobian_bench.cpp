@@ -10,12 +10,15 @@
 
 #include <benchmark/benchmark.h>
 
+#include <cmath>
 #include <map>
 #include <memory>
 #include <vector>
 
 #include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
+#include "mechanics/constraint_rows.hpp"
+#include "mechanics/index_one_dynamics.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
 #include "model_generators.hpp"
@@ -235,5 +238,72 @@ void BM_StepLoop(benchmark::State& state) {
   state.SetLabel(solver);
 }
 BENCHMARK(BM_StepLoop)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// ConstraintRows (mechanics/constraint_rows.hpp): the rows of C and gamma of every equation in
+// one pass (evaluate), and Phi with nu (values), as the index-1 dynamics needs them at each
+// evaluation of an explicit integrator.
+void BM_ConstraintRows(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  std::vector<int> rows;
+  for (int k = 0; k < c.system->constraints().size(); ++k)
+    if (c.system->constraints().equations()[static_cast<size_t>(k)].active) rows.push_back(k);
+  const mechanics::ConstraintRows cr(*c.system, rows);
+  std::vector<double> values(cr.columns().size()), gamma(rows.size()), phi(rows.size()),
+      nu(rows.size());
+  const bool valuesOnly = state.range(1) == 1;
+  for (auto _ : state) {
+    if (valuesOnly) cr.values(0.0, c.y.data(), phi.data(), nu.data());
+    else cr.evaluate(0.0, c.y.data(), values.data(), gamma.data());
+    benchmark::DoNotOptimize(values.data());
+    benchmark::DoNotOptimize(phi.data());
+  }
+  count(state, c);
+  state.counters["rows"] = static_cast<double>(rows.size());
+  state.SetLabel(valuesOnly ? "values" : "evaluate");
+}
+BENCHMARK(BM_ConstraintRows)->ArgsProduct({{10, 100, 1000}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond);
+
+// IndexOneDynamics (mechanics/index_one_dynamics.hpp): one evaluation of the index-1 equations
+// of motion (C and gamma, Q, S = C M^-1 C^T, its block Cholesky factor, multipliers and
+// accelerations), as an explicit integrator needs it at every stage.
+void BM_IndexOneEvaluate(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  mechanics::IndexOneDynamics dynamics(*c.system);
+  Eigen::VectorXd y = c.y, yp = c.yp;
+  for (auto _ : state) {
+    benchmark::DoNotOptimize(dynamics.evaluate(0.0, y, yp));
+    benchmark::DoNotOptimize(yp.data());
+  }
+  count(state, c);
+}
+BENCHMARK(BM_IndexOneEvaluate)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+// The projection after a step: every body moved and turned by ~1e-6 (positions and velocities
+// off their manifolds), projected to 1e-10 with the factorisation of an evaluation at the
+// unperturbed state (as after the last stage of a step); the copy and perturbation are timed
+// too (O(N), small).
+void BM_IndexOneProject(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  mechanics::IndexOneDynamics dynamics(*c.system);
+  Eigen::VectorXd y = c.y, yp = c.yp;
+  dynamics.evaluate(0.0, y, yp);
+  const mechanics::StateLayout& l = c.system->layout();
+  Eigen::VectorXd delta(6 * l.bodies);
+  for (Eigen::Index i = 0; i < delta.size(); ++i) delta(i) = 1e-6 * std::sin(1.7 * static_cast<double>(i));
+  Eigen::VectorXd moved = c.y;
+  mechanics::applyBodyCorrection(l, delta, moved);
+  for (int b = 0; b < l.bodies; ++b) moved(l.body(b) + mechanics::StateLayout::kW + 2) += 1e-3;
+  const long before = dynamics.factorizations();
+  for (auto _ : state) {
+    y = moved;
+    benchmark::DoNotOptimize(dynamics.project(0.0, y, 1e-10));
+    benchmark::DoNotOptimize(y.data());
+  }
+  count(state, c);
+  state.counters["factorizations"] = benchmark::Counter(
+      static_cast<double>(dynamics.factorizations() - before), benchmark::Counter::kAvgIterations);
+}
+BENCHMARK(BM_IndexOneProject)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -290,8 +290,9 @@ std::string fourBarChainAdm(int loops) { return adamsDataset(fourBarChain(loops)
 std::string bushingChainAdm(int links) { return adamsDataset(bushingChain(links)); }
 
 std::string chainAcf(const std::string& datasetFile, const std::string& outputName,
-                     double endTime, int steps, double error) {
-  return datasetFile + "\n" + outputName + "\n" + "INTEGRATOR/GSTIFF, ERROR=" + number(error) +
+                     double endTime, int steps, double error, const std::string& integrator) {
+  return datasetFile + "\n" + outputName + "\n" + "INTEGRATOR/" + integrator +
+         ", ERROR=" + number(error) +
          "\n" + "SIMULATE/DYNAMIC, END=" + number(endTime) + ", STEPS=" + std::to_string(steps) +
          "\nSTOP\n";
 }

@@ -109,10 +109,12 @@ std::string bushingChainAdm(int links);
 // The ADAMS marker id of the tip point (I marker of REQUEST/1).
 int tipMarkerId(const ChainModel& model);
 
-// Command file: read `datasetFile`, write outputs as `outputName`, GSTIFF at `error`, simulate
-// dynamics to `endTime` with `steps` output steps, stop.
+// Command file: read `datasetFile`, write outputs as `outputName`, `integrator` (an INTEGRATOR
+// method: GSTIFF, MERSON, ...) at `error`, simulate dynamics to `endTime` with `steps` output
+// steps, stop.
 std::string chainAcf(const std::string& datasetFile, const std::string& outputName,
-                     double endTime = 10.0, int steps = 100, double error = 1.0e-6);
+                     double endTime = 10.0, int steps = 100, double error = 1.0e-6,
+                     const std::string& integrator = "GSTIFF");
 
 // Model kinds known by name ("chain-planar", "chain-spatial", "fourbar", "bushing").
 ChainModel modelByName(const std::string& kind, int size);

@@ -11,6 +11,8 @@
 // SUNDIALS-based methods (the sundials engineer's classes): DSTIFF is IDA above, ABAM is
 // coordinate partitioning with CVODE's Adams method.
 #include "analysis/abam_integrator.hpp"
+// MERSON: explicit Kutta-Merson on the index-1 equations (an OpenMSS extension).
+#include "analysis/merson_integrator.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -137,6 +139,7 @@ std::optional<std::string> integratorUnavailable(const model::IntegratorSettings
     case IntegratorType::Newmark:
       break;
     case IntegratorType::Abam:
+    case IntegratorType::Merson:
       break;
     default:
       return std::string(model::integratorTypeName(s.type)) +
@@ -151,7 +154,8 @@ std::optional<std::string> integratorUnavailable(const model::IntegratorSettings
     return std::string("the SI1 formulation is not implemented; use I3 or SI2");
   if (s.type == IntegratorType::Dstiff && s.kmax && *s.kmax > 5)
     return std::string("DSTIFF's highest order is 5; write KMAX=5 or less");
-  if (s.type != IntegratorType::Abam && s.kmax && *s.kmax > 6)
+  if (s.type != IntegratorType::Abam && s.type != IntegratorType::Merson && s.kmax &&
+      *s.kmax > 6)
     return std::string("the BDF integrators' highest order is 6 (KMAX up to 12 is for ABAM); "
                        "write KMAX=6 or less");
   return std::nullopt;
@@ -167,8 +171,10 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
   if (s.type == IntegratorType::Dstiff) p.formulation = IntegratorFormulation::Si2;
   p.error = s.error.value_or(1e-3);
   p.maxit = s.maxit;
-  // DSTIFF (seed Table 4) and ABAM (Table 5, DSOLVER/INTPAR) have no step limit.
-  const bool dstiff = s.type == IntegratorType::Dstiff || s.type == IntegratorType::Abam;
+  // DSTIFF (seed Table 4) and ABAM (Table 5, DSOLVER/INTPAR) have no step limit; nor has
+  // MERSON (its steps land on the output times; docs/integrators.md, "MERSON").
+  const bool dstiff = s.type == IntegratorType::Dstiff || s.type == IntegratorType::Abam ||
+                      s.type == IntegratorType::Merson;
   // Seed Table 4: HMAX is the output step (GSTIFF; HHT and NEWMARK alike), unlimited for
   // DSTIFF; HINIT half the output step for GSTIFF, a twentieth for DSTIFF (and for HHT, as
   // ADAMS's HHT logs show); HMIN 1e-6 HMAX for GSTIFF (DSTIFF's own round-off rule).
@@ -208,10 +214,13 @@ std::string integratorParameters(const IntegratorPlan& p) {
     std::snprintf(buf, sizeof buf, "ALPHA = %.4g, BETA = %.4g, GAMMA = %.4g", p.alpha, p.beta,
                   p.gamma);
     text += buf;
+  } else if (p.type == IntegratorType::Merson) {
+    // Explicit: no order choice, no corrector (KMAX, PATTERN refused; MAXIT not used).
+    text += "explicit order 4 (MAXIT not used)";
   } else {
     text += "KMAX = " + std::to_string(p.kmax);
   }
-  text += ", MAXIT = " + std::to_string(p.maxit);
+  if (p.type != IntegratorType::Merson) text += ", MAXIT = " + std::to_string(p.maxit);
   if (p.interpolate) text += ", INTERPOLATE = ON";
   return text;
 }
@@ -279,6 +288,15 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       s.kmax = p.kmax;
       s.maxit = p.maxit;
       inner = std::make_unique<AbamIntegrator>(system, s);
+      break;
+    }
+    case IntegratorType::Merson: {
+      MersonSettings s;
+      s.error = p.error;  // each step's local error, on r, e, v and w (merson_integrator.hpp)
+      s.hinit = p.hinit;
+      s.hmax = p.hmax;
+      s.hmin = p.hmin;
+      inner = std::make_unique<MersonIntegrator>(system, s);
       break;
     }
     default:

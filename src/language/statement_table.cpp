@@ -40,6 +40,9 @@ std::vector<ArgumentSpec> integratorArguments() {
                                  flag("WSTIFF"),
                                  flag("CONSTANT_BDF"),
                                  flag("ABAM"),
+                                 // OpenMSS extension: explicit Kutta-Merson on the index-1
+                                 // equations (docs/integrators.md, "MERSON").
+                                 flag("MERSON"),
                                  flag("HASTIFF"),
                                  flag("HHT"),
                                  flag("NEWMARK"),

@@ -175,9 +175,13 @@ expr::TimeJet MultibodySystem::motionJet(int k, double t) const {
 }
 
 double MultibodySystem::constraintValue(int k, double t, const double* y) const {
-  const ConstraintEquation& eq = constraints_.equations()[k];
   Frame<double> frames[ConstraintEquation::kMaxMarkers];
-  equationFrames(eq, y, frames);
+  equationFrames(constraints_.equations()[k], y, frames);
+  return constraintValue(k, t, frames);
+}
+
+double MultibodySystem::constraintValue(int k, double t, const Frame<double>* frames) const {
+  const ConstraintEquation& eq = constraints_.equations()[k];
   double value = ConstraintSet::geometry(eq, frames);
   if (eq.motion >= 0) {
     const double target = motionJet(k, t).value;
@@ -289,7 +293,10 @@ void MultibodySystem::constraintRates(int k, const double* y, double* first,
 
 void MultibodySystem::appliedForces(double t, const double* y, Eigen::VectorXd& q) const {
   const int nb = layout_.bodies;
-  std::vector<double> g(layout_.size(), 0.0);
+  // One scratch per thread: explicit integrators call this several times per step
+  // (index_one_dynamics.cpp), so it allocates only on the first call.
+  thread_local std::vector<double> g;
+  g.assign(static_cast<size_t>(layout_.size()), 0.0);
   addSForces(t, y, g.data());
   q.resize(6 * nb);
   for (int b = 0; b < nb; ++b) {

@@ -67,6 +67,9 @@ class MultibodySystem {
 
   // Constraint k's value Phi_k(q, t) (motions wrapped to +-pi for rotations).
   double constraintValue(int k, double t, const double* y) const;
+  // The same from the frames of its markers (frames[s] of eq.marker(s)), computed by the
+  // caller (ConstraintRows shares one marker's frame among the equations that read it).
+  double constraintValue(int k, double t, const Frame<double>* frames) const;
   // Row k of C = dPhi/d(delta r, delta pi) over the moving bodies (6 columns per body).
   void constraintRow(int k, const double* y, double* row) const;
   // The same for an equation outside the DAE (a joint initial condition), and its geometry.

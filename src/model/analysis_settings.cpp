@@ -140,6 +140,7 @@ const char* integratorTypeName(IntegratorType type) {
     case IntegratorType::ConstantBdf: return "CONSTANT_BDF";
     case IntegratorType::Hastiff: return "HASTIFF";
     case IntegratorType::Cpbdf: return "CPBDF";
+    case IntegratorType::Merson: return "MERSON";
   }
   return "?";
 }
@@ -162,7 +163,8 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
   static const std::pair<const char*, T> kTypes[] = {
       {"GSTIFF", T::Gstiff}, {"WSTIFF", T::Wstiff},   {"DSTIFF", T::Dstiff},
       {"HHT", T::Hht},       {"NEWMARK", T::Newmark}, {"ABAM", T::Abam},
-      {"CONSTANT_BDF", T::ConstantBdf}, {"HASTIFF", T::Hastiff}, {"CPBDF", T::Cpbdf}};
+      {"CONSTANT_BDF", T::ConstantBdf}, {"HASTIFF", T::Hastiff}, {"CPBDF", T::Cpbdf},
+      {"MERSON", T::Merson}};
   if (method)
     for (const auto& [name, type] : kTypes)
       if (std::string(method) == name) settings.type = type;
@@ -229,6 +231,15 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
                     integratorTypeName(settings.type),
             "Write I3, or choose GSTIFF or WSTIFF.");
   }
+  // MERSON is one explicit fourth-order formula without a corrector or a Jacobian: an order
+  // limit or a Jacobian pattern would be silently meaningless, so they are refused.
+  if (settings.type == T::Merson)
+    for (const char* name : {"KMAX", "PATTERN"})
+      if (const language::Argument* a = s.find(name))
+        r.error(*a, std::string("MERSON is an explicit method of fixed order 4 without a "
+                                "Jacobian; ") + name + " does not apply to it",
+                std::string("Remove ") + name + ", or choose GSTIFF for a variable-order "
+                "implicit method.");
   if (settings.type == T::Newmark && (settings.beta || settings.gamma)) {
     const double beta = settings.beta.value_or(0.36), gamma = settings.gamma.value_or(0.7);
     if (!(gamma >= 0.5 && 2.0 * beta >= gamma)) {

@@ -44,7 +44,9 @@ struct InitialConditionSettings {
 // INTEGRATOR statement and command (digest §7.1; seed Tables 4 and 5). Unset optionals take
 // the chosen integrator's ADAMS default when the run starts (analysis/integrator_factory.cpp,
 // docs/integrators.md): several depend on the output step.
-enum class IntegratorType { Gstiff, Wstiff, Dstiff, Hht, Newmark, Abam, ConstantBdf, Hastiff, Cpbdf };
+// Merson: OpenMSS's explicit Kutta-Merson on the index-1 equations (not an ADAMS method).
+enum class IntegratorType {
+  Gstiff, Wstiff, Dstiff, Hht, Newmark, Abam, ConstantBdf, Hastiff, Cpbdf, Merson };
 enum class IntegratorFormulation { I3, Si2, Si1 };
 struct IntegratorSettings {
   IntegratorType type = IntegratorType::Gstiff;

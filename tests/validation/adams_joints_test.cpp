@@ -283,9 +283,10 @@ std::vector<IntegratorCase> everyIntegratorOnEveryCase() {
                         "Spherical_Case02", "Universal_Case01", "Universal_Case02",
                         "Prismatic_Case01", "Prismatic_Case02", "Cylindrical_Case01"})
     // DSTIFF runs on SI2 whatever the formulation asked (docs/integrators.md, "DSTIFF and
-    // ABAM"); ABAM is coordinate partitioning with CVODE's Adams method.
+    // ABAM"); ABAM is coordinate partitioning with CVODE's Adams method; MERSON explicit
+    // Kutta-Merson on the index-1 equations (an OpenMSS extension).
     for (const char* i : {"GSTIFF", "WSTIFF", "GSTIFF, SI2", "WSTIFF, SI2", "HHT", "NEWMARK",
-                          "DSTIFF", "ABAM"})
+                          "DSTIFF", "ABAM", "MERSON"})
       all.push_back({c, i});
   return all;
 }

@@ -1,0 +1,692 @@
+#include "mechanics/index_one_dynamics.hpp"
+
+#include <Eigen/OrderingMethods>
+#include <Eigen/SparseCore>
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <type_traits>
+#include <utility>
+
+#include "mechanics/constraint_rows.hpp"
+#include "mechanics/coupled_accelerations.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "mechanics/user_state_solve.hpp"
+
+namespace openmss::mechanics {
+namespace {
+
+std::vector<int> activeEquations(const MultibodySystem& system) {
+  std::vector<int> rows;
+  const auto& eqs = system.constraints().equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k)
+    if (eqs[static_cast<size_t>(k)].active) rows.push_back(k);
+  return rows;
+}
+
+// A pivot of S at most this fraction of its diagonal entry before elimination means the rows
+// of C are dependent to working precision (a singular configuration): the accelerations are
+// not determined and evaluate() says so instead of returning amplified round-off.
+constexpr double kPivotTolerance = 1e-12;
+// Position and velocity projections: a Newton iteration on an older factorisation is kept while
+// it shrinks the violation at least this much per iteration, else S is formed afresh.
+constexpr double kContraction = 0.2;
+constexpr int kMaxProjectionIterations = 10;
+
+// The block kernels below are written once with the block size as a template parameter and
+// run with it fixed for the common sizes (1-6 rows: every joint, primitive and motion) so that
+// the compiler unrolls and vectorises them; N = 0 is the same code with the size at run time.
+template <class Kernel>
+void withSize(int n, Kernel&& kernel) {
+  switch (n) {
+    case 1:
+      kernel(std::integral_constant<int, 1>{});
+      break;
+    case 2:
+      kernel(std::integral_constant<int, 2>{});
+      break;
+    case 3:
+      kernel(std::integral_constant<int, 3>{});
+      break;
+    case 4:
+      kernel(std::integral_constant<int, 4>{});
+      break;
+    case 5:
+      kernel(std::integral_constant<int, 5>{});
+      break;
+    case 6:
+      kernel(std::integral_constant<int, 6>{});
+      break;
+    default:
+      kernel(std::integral_constant<int, 0>{});
+      break;
+  }
+}
+
+// target (ni x nj) (+)= a (ni x 6) b^T (b: nj x 6), all column-major.
+template <int N>
+void multiplyTransposed(int niRuntime, int nj, const double* a, const double* b, double* target,
+                        bool assign) {
+  const int ni = N > 0 ? N : niRuntime;
+  for (int c = 0; c < nj; ++c) {
+    double* t = target + ni * c;
+    if (assign)
+      for (int r = 0; r < ni; ++r) t[r] = 0.0;
+    for (int d = 0; d < 6; ++d) {
+      const double f = b[c + nj * d];
+      const double* ad = a + ni * d;
+      for (int r = 0; r < ni; ++r) t[r] += ad[r] * f;
+    }
+  }
+}
+
+// target (ni x nk) -= a (ni x n) b^T (b: nk x n), column-major.
+template <int N>
+void subtractProduct(int niRuntime, int nk, int n, const double* a, const double* b,
+                     double* target) {
+  const int ni = N > 0 ? N : niRuntime;
+  for (int c = 0; c < nk; ++c) {
+    double* t = target + ni * c;
+    for (int k = 0; k < n; ++k) {
+      const double f = b[c + nk * k];
+      const double* ak = a + ni * k;
+      for (int r = 0; r < ni; ++r) t[r] -= ak[r] * f;
+    }
+  }
+}
+
+// b (ni x n) <- b L^-T with L lower triangular (n x n) and inverse its diagonal's inverses.
+template <int N>
+void solveRight(int niRuntime, int n, const double* l, const double* inverse, double* b) {
+  const int ni = N > 0 ? N : niRuntime;
+  for (int c = 0; c < n; ++c) {
+    double* bc = b + ni * c;
+    for (int k = 0; k < c; ++k) {
+      const double f = l[c + n * k];
+      const double* bk = b + ni * k;
+      for (int r = 0; r < ni; ++r) bc[r] -= bk[r] * f;
+    }
+    for (int r = 0; r < ni; ++r) bc[r] *= inverse[c];
+  }
+}
+
+}  // namespace
+
+// The Schur complement S = C M^-1 C^T of the KKT matrix and its Cholesky factor, both in dense
+// blocks (docs/theory.md §9f). The rows of C are grouped into blocks of equations that touch
+// the same set of moving bodies (the five equations of a revolute joint form one block), so S is
+// block-sparse with one nonzero block per pair of blocks sharing a body; the blocks are ordered
+// by approximate minimum degree on this block graph and the fill is found once. Every numeric
+// step then runs over precomputed offsets: no search, no allocation, small dense kernels.
+struct IndexOneDynamics::Engine {
+  explicit Engine(const MultibodySystem& system);
+
+  // One (block, body) pair: the block's `rows` rows of C restricted to the body's 6 columns
+  // (dense, column-major, rows x 6) at `offset` in cDense and in w (W = C M^-1, same shape).
+  struct Incidence {
+    int block = 0, body = 0, offset = 0, rows = 0;
+  };
+  // S_ij += W_p C_q^T into the block at `target` (column-major, rows(i) x rows(j)), i >= j;
+  // `assign`: the first contribution to its block (overwrites instead of adding).
+  struct Contribution {
+    int p = 0, q = 0, target = 0;
+    bool assign = false;
+  };
+  // L_ik -= L_ij L_kj^T (i >= k) within column j: sources are off-diagonal blocks of column j.
+  struct Update {
+    int source = 0, sourceRows = 0, other = 0, otherRows = 0, target = 0;
+  };
+
+  // C at the state (entries in the order of rows.columns()) -> W, S and its factor. False when
+  // S is singular or not finite.
+  bool factor(const double* values);
+  // x <- S^-1 x (x in block order).
+  void solve(double* x) const;
+  // out (6 per body) = -M^-1 C^T x, with the C of the last factorisation.
+  void correction(const double* x, Eigen::VectorXd& out) const;
+  // max_r |(C u - nu)_r| with C in `values` (rows' order) and u from y; residual in block order.
+  double velocityResidual(const double* values, const double* nu, const Eigen::VectorXd& y,
+                          double* residual, double* scale) const;
+
+  const MultibodySystem& system;
+  ConstraintRows rows;
+  int nb = 0, m = 0;
+  bool baselineAccelerations = false;  // functions read accelerations or reactions
+  bool massInvertible = true;          // every body has m > 0 and a positive-definite inertia
+  std::vector<double> inverseMass;
+  std::vector<Eigen::Matrix3d> inverseInertia;
+
+  // Blocks in elimination order: rows blockStart[j] .. blockStart[j + 1] - 1 of the permuted
+  // vector; permutedRow[pos] is the row (index into rows) at that position.
+  std::vector<int> blockStart, permutedRow, positionOf;
+  std::vector<Incidence> incidences;
+  std::vector<int> scatter;        // entry i of rows.values -> index into cDense
+  std::vector<int> velocityIndex;  // entry i of rows.values -> index in y of its velocity
+  std::vector<Contribution> contributions;
+  // Factor storage: column j has its diagonal block (full, column-major) at diagOffset[j] and
+  // the off-diagonal blocks offRow[s], offOffset[s] for s in offStart[j] .. offStart[j + 1] - 1.
+  std::vector<int> diagOffset, offStart, offRow, offOffset;
+  std::vector<int> updateStart;  // updates of column j: updateStart[j] .. updateStart[j + 1] - 1
+  std::vector<Update> updates;
+  std::vector<double> cDense, w, factorValues, sDiagonal, inverseDiagonal;
+  std::vector<std::pair<int, int>> fillBlocks;  // (offset, entries) of blocks S has zero
+  bool factored = false;
+  // Tests run the kernels with the block size at run time too (the path of blocks of more
+  // than 6 rows, which the bundled models do not have): 0 selects it in withSize.
+  bool runtimeSizeKernels = false;
+  int kernelSize(int rowsOfBlock) const { return runtimeSizeKernels ? 0 : rowsOfBlock; }
+
+  // Scratch of one evaluation or projection (no allocation after the first call).
+  std::vector<double> values, gamma, phi, nu, x;
+  Eigen::VectorXd forces, delta;  // Q; M^-1 C^T times a multiplier vector
+};
+
+IndexOneDynamics::Engine::Engine(const MultibodySystem& sys)
+    : system(sys), rows(sys, activeEquations(sys)) {
+  nb = sys.layout().bodies;
+  m = rows.count();
+  baselineAccelerations = readsAccelerationsOrReactions(sys.model());
+  for (int b = 0; b < nb; ++b) {
+    const double mass = sys.bodyMass(b);
+    const Eigen::LLT<Eigen::Matrix3d> llt(sys.bodyInertia(b));
+    if (!(mass > 0.0) || llt.info() != Eigen::Success) massInvertible = false;
+    inverseMass.push_back(mass > 0.0 ? 1.0 / mass : 0.0);
+    Eigen::Matrix3d inverse = Eigen::Matrix3d::Zero();
+    if (llt.info() == Eigen::Success) inverse = llt.solve(Eigen::Matrix3d::Identity());
+    inverseInertia.push_back(inverse);
+  }
+  // Group the rows by the set of bodies they touch.
+  const std::vector<int>& start = rows.start();
+  const std::vector<int>& cols = rows.columns();
+  std::map<std::vector<int>, int> blockOfSet;
+  std::vector<std::vector<int>> blockRows, blockBodies;
+  for (int r = 0; r < m; ++r) {
+    std::vector<int> bodies;
+    for (int i = start[r]; i < start[r + 1]; ++i) bodies.push_back(cols[i] / 6);
+    bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());  // cols increase
+    auto [it, added] = blockOfSet.try_emplace(bodies, static_cast<int>(blockRows.size()));
+    if (added) {
+      blockRows.emplace_back();
+      blockBodies.push_back(bodies);
+    }
+    blockRows[it->second].push_back(r);
+  }
+  const int nBlocks = static_cast<int>(blockRows.size());
+  std::vector<std::vector<int>> blocksOfBody(nb);
+  for (int j = 0; j < nBlocks; ++j)
+    for (int b : blockBodies[j]) blocksOfBody[b].push_back(j);
+  // Approximate minimum degree on the block graph (blocks adjacent when they share a body).
+  std::vector<int> order(nBlocks);
+  for (int j = 0; j < nBlocks; ++j) order[j] = j;
+  if (nBlocks > 1) {
+    std::vector<Eigen::Triplet<double, int>> pattern;
+    for (int b = 0; b < nb; ++b)
+      for (int i : blocksOfBody[b])
+        for (int j : blocksOfBody[b]) pattern.emplace_back(i, j, 1.0);
+    for (int j = 0; j < nBlocks; ++j) pattern.emplace_back(j, j, 1.0);
+    Eigen::SparseMatrix<double, Eigen::ColMajor, int> graph(nBlocks, nBlocks);
+    graph.setFromTriplets(pattern.begin(), pattern.end());
+    Eigen::PermutationMatrix<Eigen::Dynamic, Eigen::Dynamic, int> perm;
+    Eigen::AMDOrdering<int>()(graph, perm);
+    // perm maps the elimination position to the block (Eigen's convention: the inverse of the
+    // permutation applied to the matrix).
+    for (int k = 0; k < nBlocks; ++k) order[k] = perm.indices()[k];
+  }
+  blockStart.assign(1, 0);
+  positionOf.assign(m, 0);
+  for (int k = 0; k < nBlocks; ++k) {
+    for (int r : blockRows[order[k]]) {
+      positionOf[r] = static_cast<int>(permutedRow.size());
+      permutedRow.push_back(r);
+    }
+    blockStart.push_back(static_cast<int>(permutedRow.size()));
+  }
+  auto size = [&](int j) { return blockStart[j + 1] - blockStart[j]; };
+  // Incidences and the scatter of C's entries into them.
+  std::vector<std::vector<int>> incidencesOfBody(nb);
+  std::map<std::pair<int, int>, int> incidenceOf;
+  int dense = 0;
+  for (int k = 0; k < nBlocks; ++k)
+    for (int b : blockBodies[order[k]]) {
+      incidenceOf[{k, b}] = static_cast<int>(incidences.size());
+      incidencesOfBody[b].push_back(static_cast<int>(incidences.size()));
+      incidences.push_back({k, b, dense, size(k)});
+      dense += 6 * size(k);
+    }
+  cDense.assign(dense, 0.0);
+  w.assign(dense, 0.0);
+  scatter.assign(cols.size(), 0);
+  velocityIndex.assign(cols.size(), 0);
+  for (size_t i = 0; i < cols.size(); ++i) {
+    const int dir = cols[i] % 6;
+    velocityIndex[i] = sys.layout().body(cols[i] / 6) +
+                       (dir < 3 ? StateLayout::kV + dir : StateLayout::kW + dir - 3);
+  }
+  for (int pos = 0; pos < m; ++pos) {
+    const int r = permutedRow[pos];
+    const int k = static_cast<int>(std::upper_bound(blockStart.begin(), blockStart.end(), pos) -
+                                   blockStart.begin()) -
+                  1;
+    const int within = pos - blockStart[k];
+    for (int i = start[r]; i < start[r + 1]; ++i) {
+      const Incidence& inc = incidences[incidenceOf.at({k, cols[i] / 6})];
+      scatter[i] = inc.offset + within + inc.rows * (cols[i] % 6);
+    }
+  }
+  // Symbolic block factorisation: the lower structure of each column is its neighbours after
+  // it plus the structures of its children in the elimination tree.
+  std::vector<std::vector<int>> structure(nBlocks), children(nBlocks);
+  for (int b = 0; b < nb; ++b)
+    for (int i : incidencesOfBody[b])
+      for (int j : incidencesOfBody[b]) {
+        const int bi = incidences[i].block, bj = incidences[j].block;
+        if (bi > bj) structure[bj].push_back(bi);
+      }
+  for (int j = 0; j < nBlocks; ++j) {
+    std::vector<int>& s = structure[j];
+    for (int c : children[j])
+      for (int i : structure[c])
+        if (i > j) s.push_back(i);
+    std::sort(s.begin(), s.end());
+    s.erase(std::unique(s.begin(), s.end()), s.end());
+    if (!s.empty()) children[s.front()].push_back(j);
+  }
+  int storage = 0;
+  offStart.assign(1, 0);
+  for (int j = 0; j < nBlocks; ++j) {
+    diagOffset.push_back(storage);
+    storage += size(j) * size(j);
+    for (int i : structure[j]) {
+      offRow.push_back(i);
+      offOffset.push_back(storage);
+      storage += size(i) * size(j);
+    }
+    offStart.push_back(static_cast<int>(offRow.size()));
+  }
+  factorValues.assign(storage, 0.0);
+  // Where block (i, j), i >= j, lives in the factor storage.
+  auto blockAt = [&](int i, int j) {
+    if (i == j) return diagOffset[j];
+    const auto first = offRow.begin() + offStart[j], last = offRow.begin() + offStart[j + 1];
+    return offOffset[static_cast<size_t>(std::lower_bound(first, last, i) - offRow.begin())];
+  };
+  std::vector<bool> reached(storage, false);
+  for (int b = 0; b < nb; ++b)
+    for (int p : incidencesOfBody[b])
+      for (int q : incidencesOfBody[b])
+        if (incidences[p].block >= incidences[q].block) {
+          const int target = blockAt(incidences[p].block, incidences[q].block);
+          contributions.push_back({p, q, target, !reached[target]});
+          reached[target] = true;
+        }
+  for (int j = 0; j < nBlocks; ++j) {
+    if (!reached[diagOffset[j]]) fillBlocks.emplace_back(diagOffset[j], size(j) * size(j));
+    for (int s = offStart[j]; s < offStart[j + 1]; ++s)
+      if (!reached[offOffset[s]]) fillBlocks.emplace_back(offOffset[s], size(offRow[s]) * size(j));
+  }
+  updateStart.assign(1, 0);
+  for (int j = 0; j < nBlocks; ++j) {
+    for (int a = offStart[j]; a < offStart[j + 1]; ++a)
+      for (int c = offStart[j]; c <= a; ++c)
+        updates.push_back({offOffset[a], size(offRow[a]), offOffset[c], size(offRow[c]),
+                           blockAt(offRow[a], offRow[c])});
+    updateStart.push_back(static_cast<int>(updates.size()));
+  }
+  sDiagonal.assign(m, 0.0);
+  inverseDiagonal.assign(m, 0.0);
+  values.assign(cols.size(), 0.0);
+  gamma.assign(m, 0.0);
+  phi.assign(m, 0.0);
+  nu.assign(m, 0.0);
+  x.assign(m, 0.0);
+}
+
+bool IndexOneDynamics::Engine::factor(const double* entries) {
+  factored = false;
+  for (size_t i = 0; i < scatter.size(); ++i) cDense[scatter[i]] = entries[i];
+  auto size = [&](int j) { return blockStart[j + 1] - blockStart[j]; };
+  // W = C M^-1 per incidence: translations scaled by 1/m, rotations times J^-1 (symmetric).
+  for (const Incidence& inc : incidences) {
+    const int n = inc.rows;
+    const double im = inverseMass[inc.body];
+    const Eigen::Matrix3d& ji = inverseInertia[inc.body];
+    const double* c = cDense.data() + inc.offset;
+    double* wp = w.data() + inc.offset;
+    for (int i = 0; i < 3 * n; ++i) wp[i] = c[i] * im;
+    for (int d = 0; d < 3; ++d)
+      for (int r = 0; r < n; ++r)
+        wp[n * (3 + d) + r] =
+            c[n * 3 + r] * ji(0, d) + c[n * 4 + r] * ji(1, d) + c[n * 5 + r] * ji(2, d);
+  }
+  for (const auto& [offset, count] : fillBlocks)
+    std::fill_n(factorValues.begin() + offset, count, 0.0);
+  for (const Contribution& s : contributions) {
+    const Incidence& p = incidences[s.p];
+    const Incidence& q = incidences[s.q];
+    withSize(kernelSize(p.rows), [&](auto n) {
+      multiplyTransposed<decltype(n)::value>(p.rows, q.rows, w.data() + p.offset,
+                                             cDense.data() + q.offset,
+                                             factorValues.data() + s.target, s.assign);
+    });
+  }
+  const int nBlocks = static_cast<int>(blockStart.size()) - 1;
+  for (int j = 0; j < nBlocks; ++j) {
+    const int n = size(j);
+    for (int c = 0; c < n; ++c)
+      sDiagonal[blockStart[j] + c] = factorValues[diagOffset[j] + c + n * c];
+  }
+  for (int j = 0; j < nBlocks; ++j) {
+    const int n = size(j);
+    double* l = factorValues.data() + diagOffset[j];
+    double* inverse = inverseDiagonal.data() + blockStart[j];
+    // Dense Cholesky of the diagonal block (lower triangle; the updates kept it current).
+    for (int c = 0; c < n; ++c) {
+      double d = l[c + n * c];
+      for (int k = 0; k < c; ++k) d -= l[c + n * k] * l[c + n * k];
+      // The pivot is what is left of S_cc once the earlier rows are eliminated: a tiny
+      // remainder means row c of C is (nearly) a combination of earlier rows.
+      if (!(d > kPivotTolerance * sDiagonal[blockStart[j] + c]) || !std::isfinite(d)) return false;
+      const double root = std::sqrt(d);
+      l[c + n * c] = root;
+      inverse[c] = 1.0 / root;
+      for (int r = c + 1; r < n; ++r) {
+        double v = l[r + n * c];
+        for (int k = 0; k < c; ++k) v -= l[r + n * k] * l[c + n * k];
+        l[r + n * c] = v * inverse[c];
+      }
+    }
+    for (int s = offStart[j]; s < offStart[j + 1]; ++s) {
+      const int ni = size(offRow[s]);
+      withSize(kernelSize(ni), [&](auto nc) {
+        solveRight<decltype(nc)::value>(ni, n, l, inverse, factorValues.data() + offOffset[s]);
+      });
+    }
+    for (int u = updateStart[j]; u < updateStart[j + 1]; ++u) {
+      const Update& up = updates[u];
+      withSize(kernelSize(up.sourceRows), [&](auto nc) {
+        subtractProduct<decltype(nc)::value>(
+            up.sourceRows, up.otherRows, n, factorValues.data() + up.source,
+            factorValues.data() + up.other, factorValues.data() + up.target);
+      });
+    }
+  }
+  factored = true;
+  return true;
+}
+
+void IndexOneDynamics::Engine::solve(double* v) const {
+  auto size = [&](int j) { return blockStart[j + 1] - blockStart[j]; };
+  const int nBlocks = static_cast<int>(blockStart.size()) - 1;
+  // L y = v, column by column.
+  for (int j = 0; j < nBlocks; ++j) {
+    const int n = size(j);
+    const double* l = factorValues.data() + diagOffset[j];
+    double* vj = v + blockStart[j];
+    const double* inverse = inverseDiagonal.data() + blockStart[j];
+    for (int c = 0; c < n; ++c) {
+      double s = vj[c];
+      for (int k = 0; k < c; ++k) s -= l[c + n * k] * vj[k];
+      vj[c] = s * inverse[c];
+    }
+    for (int s = offStart[j]; s < offStart[j + 1]; ++s) {
+      const int ni = size(offRow[s]);
+      const double* bl = factorValues.data() + offOffset[s];
+      double* vi = v + blockStart[offRow[s]];
+      withSize(kernelSize(ni), [&](auto nc) {
+        constexpr int N = decltype(nc)::value;
+        const int rowsOfBlock = N > 0 ? N : ni;
+        for (int c = 0; c < n; ++c)
+          for (int a = 0; a < rowsOfBlock; ++a) vi[a] -= bl[a + rowsOfBlock * c] * vj[c];
+      });
+    }
+  }
+  // L^T x = y, backwards.
+  for (int j = nBlocks - 1; j >= 0; --j) {
+    const int n = size(j);
+    const double* l = factorValues.data() + diagOffset[j];
+    double* vj = v + blockStart[j];
+    for (int s = offStart[j]; s < offStart[j + 1]; ++s) {
+      const int ni = size(offRow[s]);
+      const double* bl = factorValues.data() + offOffset[s];
+      const double* vi = v + blockStart[offRow[s]];
+      withSize(kernelSize(ni), [&](auto nc) {
+        constexpr int N = decltype(nc)::value;
+        const int rowsOfBlock = N > 0 ? N : ni;
+        for (int c = 0; c < n; ++c) {
+          double sum = 0.0;
+          for (int a = 0; a < rowsOfBlock; ++a) sum += bl[a + rowsOfBlock * c] * vi[a];
+          vj[c] -= sum;
+        }
+      });
+    }
+    const double* inverse = inverseDiagonal.data() + blockStart[j];
+    for (int c = n - 1; c >= 0; --c) {
+      double s = vj[c];
+      for (int k = c + 1; k < n; ++k) s -= l[k + n * c] * vj[k];
+      vj[c] = s * inverse[c];
+    }
+  }
+}
+
+void IndexOneDynamics::Engine::correction(const double* v, Eigen::VectorXd& out) const {
+  out.setZero(6 * nb);
+  // -M^-1 C^T v = -W^T v, incidence by incidence.
+  for (const Incidence& inc : incidences) {
+    const int n = inc.rows;
+    const double* vj = v + blockStart[inc.block];
+    const double* wp = w.data() + inc.offset;
+    double* o = out.data() + 6 * inc.body;
+    for (int d = 0; d < 6; ++d) {
+      double sum = 0.0;
+      for (int r = 0; r < n; ++r) sum += wp[r + n * d] * vj[r];
+      o[d] -= sum;
+    }
+  }
+}
+
+double IndexOneDynamics::Engine::velocityResidual(const double* entries, const double* rates,
+                                                  const Eigen::VectorXd& y, double* residual,
+                                                  double* scale) const {
+  const std::vector<int>& start = rows.start();
+  const double* u = y.data();
+  double worst = 0.0, size = 0.0;
+  for (int r = 0; r < m; ++r) {
+    double cu = 0.0;
+    for (int i = start[r]; i < start[r + 1]; ++i) cu += entries[i] * u[velocityIndex[i]];
+    const double v = cu - rates[r];
+    if (residual) residual[positionOf[r]] = v;
+    worst = std::max(worst, std::abs(v));
+    if (scale) {
+      // The size of the terms of C u: the round-off floor of the residual.
+      double magnitude = std::abs(rates[r]);
+      for (int i = start[r]; i < start[r + 1]; ++i)
+        magnitude += std::abs(entries[i] * u[velocityIndex[i]]);
+      size = std::max(size, magnitude);
+    }
+  }
+  if (scale) *scale = size;
+  return worst;
+}
+
+IndexOneDynamics::IndexOneDynamics(const MultibodySystem& system)
+    : system_(system), engine_(std::make_unique<Engine>(system)) {}
+
+IndexOneDynamics::~IndexOneDynamics() = default;
+
+void IndexOneDynamics::useRuntimeSizeKernels() { engine_->runtimeSizeKernels = true; }
+
+std::string IndexOneDynamics::unsupportedReason() const {
+  if (system_.layout().userDifferential > 0)
+    return "the model has DIFF, LSE, TFSISO or GSE states, which the index-1 form does not "
+           "integrate; use INTEGRATOR/GSTIFF";
+  return {};
+}
+
+namespace {
+
+void normaliseEulerParameters(const StateLayout& l, Eigen::VectorXd& y) {
+  for (int b = 0; b < l.bodies; ++b) {
+    auto e = y.segment<4>(l.body(b) + StateLayout::kE);
+    e /= e.norm();
+  }
+}
+
+}  // namespace
+
+bool IndexOneDynamics::evaluate(double t, Eigen::VectorXd& y, Eigen::VectorXd& yp) {
+  const StateLayout& l = system_.layout();
+  Engine& g = *engine_;
+  normaliseEulerParameters(l, y);
+  // Functions of accelerations or reactions couple Q to u' and lambda (a Newton solve,
+  // docs/theory.md §4b), and a massless body has no M^-1: both take the full KKT solve of the
+  // initial-condition analysis, correct though several times slower.
+  if (g.baselineAccelerations || !g.massInvertible) {
+    ++factorizations_;
+    return solveAccelerations(system_, t, y, yp);
+  }
+  // VARIABLE values first: applied forces may read them (§4a).
+  if (l.userAlgebraic > 0 && !solveUserAlgebraic(system_, t, y).converged) return false;
+  system_.appliedForces(t, y.data(), g.forces);
+  const int m = g.m;
+  if (m > 0) {
+    g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+    ++factorizations_;
+    if (!g.factor(g.values.data())) return false;
+    // S lambda = C M^-1 Q - gamma (from C u' = gamma and M u' = Q - C^T lambda).
+    for (int pos = 0; pos < m; ++pos) g.x[pos] = -g.gamma[g.permutedRow[pos]];
+    for (const Engine::Incidence& inc : g.incidences) {
+      const int n = inc.rows;
+      const double* wp = g.w.data() + inc.offset;
+      const double* qb = g.forces.data() + 6 * inc.body;
+      double* xj = g.x.data() + g.blockStart[inc.block];
+      for (int d = 0; d < 6; ++d)
+        for (int r = 0; r < n; ++r) xj[r] += wp[r + n * d] * qb[d];
+    }
+    g.solve(g.x.data());
+    g.correction(g.x.data(), g.delta);  // -M^-1 C^T lambda
+  } else {
+    g.delta.setZero(6 * l.bodies);
+  }
+  if (yp.size() != l.size()) yp.resize(l.size());
+  yp.tail(l.size() - l.userStates()).setZero();
+  for (int k = 0; k < l.constraintEquations; ++k) y(l.lambda(k)) = 0.0;
+  bool finite = true;
+  for (int pos = 0; pos < m; ++pos) {
+    const double lambda = g.x[pos];
+    finite = finite && std::isfinite(lambda);
+    y(l.lambda(g.rows.rows()[g.permutedRow[pos]])) = lambda;
+  }
+  for (int b = 0; b < l.bodies; ++b) {
+    const int o = l.body(b);
+    const double* e = y.data() + o + StateLayout::kE;
+    const double* wb = y.data() + o + StateLayout::kW;
+    double* d = yp.data() + o;
+    for (int c = 0; c < 3; ++c) d[StateLayout::kR + c] = y(o + StateLayout::kV + c);
+    d[StateLayout::kE + 0] = 0.5 * (-e[1] * wb[0] - e[2] * wb[1] - e[3] * wb[2]);
+    d[StateLayout::kE + 1] = 0.5 * (e[0] * wb[0] + e[2] * wb[2] - e[3] * wb[1]);
+    d[StateLayout::kE + 2] = 0.5 * (e[0] * wb[1] + e[3] * wb[0] - e[1] * wb[2]);
+    d[StateLayout::kE + 3] = 0.5 * (e[0] * wb[2] + e[1] * wb[1] - e[2] * wb[0]);
+    // u' = M^-1 Q - M^-1 C^T lambda.
+    const double* qb = g.forces.data() + 6 * b;
+    const double* cb = g.delta.data() + 6 * b;
+    const Eigen::Matrix3d& ji = g.inverseInertia[b];
+    for (int c = 0; c < 3; ++c) {
+      d[StateLayout::kV + c] = g.inverseMass[b] * qb[c] + cb[c];
+      d[StateLayout::kW + c] = ji(c, 0) * qb[3] + ji(c, 1) * qb[4] + ji(c, 2) * qb[5] + cb[3 + c];
+      finite =
+          finite && std::isfinite(d[StateLayout::kV + c]) && std::isfinite(d[StateLayout::kW + c]);
+    }
+    d[StateLayout::kMu] = 0.0;
+    y(o + StateLayout::kMu) = 0.0;
+  }
+  userStateRates(system_, t, y, yp);
+  return finite;
+}
+
+bool IndexOneDynamics::project(double t, Eigen::VectorXd& y, double positionTolerance) {
+  const StateLayout& l = system_.layout();
+  Engine& g = *engine_;
+  normaliseEulerParameters(l, y);
+  if (g.m == 0) return true;
+  if (!g.massInvertible) {
+    // No mass weighting without M^-1: the plain least change of the set-up analysis.
+    const AssemblyResult r = assemblePositions(system_, t, y, positionTolerance, 25);
+    if (!r.converged) return false;
+    solveVelocities(system_, t, y);
+    return true;
+  }
+  // The factorisation of the last evaluation (a nearby state) serves while the Newton
+  // iteration contracts fast; S is formed afresh at the current state when it does not.
+  bool current = false;  // g's factorisation belongs to the current positions
+  auto refactor = [&]() {
+    g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+    ++factorizations_;
+    current = g.factor(g.values.data());
+    return current;
+  };
+  g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
+  auto largest = [&](const std::vector<double>& v) {
+    double worst = 0.0;
+    for (double e : v) worst = std::max(worst, std::abs(e));
+    return std::isfinite(worst) ? worst : HUGE_VAL;
+  };
+  double error = largest(g.phi);
+  for (int it = 0; error > positionTolerance; ++it) {
+    if (it == kMaxProjectionIterations) return false;
+    if (!g.factored && !refactor()) return false;
+    for (int pos = 0; pos < g.m; ++pos) g.x[pos] = g.phi[g.permutedRow[pos]];
+    g.solve(g.x.data());
+    g.correction(g.x.data(), g.delta);  // dq = -M^-1 C^T S^-1 Phi
+    applyBodyCorrection(l, g.delta, y);
+    current = false;
+    g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
+    const double next = largest(g.phi);
+    if (!(next <= kContraction * error)) g.factored = false;  // poor contraction: refactor
+    error = next;
+  }
+  // Velocities: du = -M^-1 C^T S^-1 (C u - nu) with C at the final positions.
+  g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+  double scale = 0.0;
+  double residual = g.velocityResidual(g.values.data(), g.nu.data(), y, g.x.data(), &scale);
+  // Relative to the size of the terms of C u; the round-off floor is ~1e-16 of it.
+  const double tolerance = 1e-12 * std::max(scale, 1e-300);
+  for (int it = 0; residual > tolerance; ++it) {
+    if (it == kMaxProjectionIterations) break;  // round-off floor: as good as it gets
+    if (!g.factored) {
+      // The last factorisation was at other positions: form S here (values hold C).
+      ++factorizations_;
+      if (!g.factor(g.values.data())) return false;
+      current = true;
+    }
+    g.solve(g.x.data());
+    g.correction(g.x.data(), g.delta);
+    for (int b = 0; b < l.bodies; ++b) {
+      y.segment<3>(l.body(b) + StateLayout::kV) += g.delta.segment<3>(6 * b);
+      y.segment<3>(l.body(b) + StateLayout::kW) += g.delta.segment<3>(6 * b + 3);
+    }
+    const double next = g.velocityResidual(g.values.data(), g.nu.data(), y, g.x.data(), nullptr);
+    if (!(next <= kContraction * residual)) {
+      if (current) break;  // a fresh factorisation stalls only at round-off
+      g.factored = false;
+    }
+    residual = next;
+  }
+  return std::isfinite(residual);
+}
+
+double IndexOneDynamics::positionViolation(double t, const Eigen::VectorXd& y) const {
+  Engine& g = *engine_;
+  g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
+  double worst = 0.0;
+  for (double v : g.phi) worst = std::max(worst, std::abs(v));
+  return worst;
+}
+
+double IndexOneDynamics::velocityViolation(double t, const Eigen::VectorXd& y) const {
+  Engine& g = *engine_;
+  g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
+  g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+  return g.velocityResidual(g.values.data(), g.nu.data(), y, nullptr, nullptr);
+}
+
+}  // namespace openmss::mechanics

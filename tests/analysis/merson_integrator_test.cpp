@@ -1,0 +1,361 @@
+// MERSON (explicit Kutta-Merson 4(3) on the index-1 equations with projection) against
+// independent answers: the index-3 pendulum of the DAE test sets (and its error falling with
+// ERROR), a mass on a spring-damper (closed form, at steps and inside them), the energy and
+// constraints of an undamped planar chain, GSTIFF at tight tolerance on a spatial chain, the
+// refusal of DIFF states, the stiffness warning on a spring of k/m = 1e8, and two CLI runs that
+// must write the same .req byte for byte.
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <limits>
+#include <memory>
+#include <string>
+
+#include "analysis/merson_integrator.hpp"
+#include "analysis/multibody_dae.hpp"
+#include "language/reader.hpp"
+#include "mechanics/index_one_dynamics.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "model/model_builder.hpp"
+#include "solvers/bdf_integrator.hpp"
+#include "support/cli_run.hpp"
+
+namespace openmss::analysis {
+namespace {
+
+using mechanics::StateLayout;
+
+// The test-set pendulum's position at t = 1 (as tests/analysis/sundials_integrators_test.cpp).
+constexpr double kX1 = 0.867348640604551746;
+constexpr double kY1 = 0.497701050476373918;
+
+const char* kPendulum =
+    "DAE test-set pendulum\n"
+    "UNITS/ SYSTEM=NONE\n"
+    "PART/1, GROUND\n"
+    "MARKER/10, PART=1\n"
+    "PART/2, MASS=1, CM=20, IP=1e-10,1e-10,1e-10, VX=0, VY=1, VZ=0\n"
+    "MARKER/20, PART=2, QP=1,0,0\n"
+    "MARKER/21, PART=2, QP=0,0,0\n"
+    "JOINT/1, REVOLUTE, I=21, J=10\n"
+    "ACCGRAV/ JGRAV=-1\n"
+    "END\n";
+
+// m = 2 on a translational joint along z, k = 200, c = 4: x(t) = e^{-t} x0 (cos wd t +
+// sin(wd t) / wd), wd^2 = 99.
+const char* kSpringDamper =
+    "mass on a spring-damper\n"
+    "UNITS/ SYSTEM=NONE\n"
+    "PART/1, GROUND\n"
+    "MARKER/10, PART=1\n"
+    "PART/2, MASS=2, CM=20, IP=1,1,1, QG=0,0,1.1\n"
+    "MARKER/20, PART=2\n"
+    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
+    "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=200, C=4, LENGTH=1\n"
+    "END\n";
+
+// k/m = 1e8, critically damped: eigenvalues -1e4 (double); the mass rests after ~1e-3 s.
+const char* kStiffSpring =
+    "stiff spring-damper\n"
+    "UNITS/ SYSTEM=NONE\n"
+    "PART/1, GROUND\n"
+    "MARKER/10, PART=1\n"
+    "PART/2, MASS=1, CM=20, IP=1,1,1, QG=0,0,1.001\n"
+    "MARKER/20, PART=2\n"
+    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
+    "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=1e8, C=2e4, LENGTH=1\n"
+    "END\n";
+
+// N unit links (1 kg, slender: I = 1/12 about the transverse axes) along x from the origin,
+// gravity 9.81 along -y. Planar: revolute joints about z. Spatial: spherical joints, and the
+// links start with a transverse velocity along z growing down the chain (made consistent by
+// the initial-condition analysis), so the motion leaves the plane.
+std::string chainDataset(int links, bool spatial) {
+  std::string text = std::string(spatial ? "spatial" : "planar") + " pendulum chain\n" +
+                     "UNITS/ SYSTEM=NONE\nPART/1, GROUND\nMARKER/10, PART=1\n";
+  char buf[256];
+  for (int i = 1; i <= links; ++i) {
+    const int part = i + 1;
+    std::snprintf(buf, sizeof buf,
+                  "PART/%d, MASS=1, CM=%d01, IP=1e-4,0.0833333333333333,0.0833333333333333%s\n"
+                  "MARKER/%d01, PART=%d, QP=%g,0,0\nMARKER/%d02, PART=%d, QP=%d,0,0\n"
+                  "MARKER/%d03, PART=%d, QP=%d,0,0\n"
+                  "JOINT/%d, %s, I=%d02, J=%d\n",
+                  part, part, spatial ? (", VZ=" + std::to_string(0.5 * i)).c_str() : "", part,
+                  part, i - 0.5, part, part, i - 1, part, part, i, i,
+                  spatial ? "SPHERICAL" : "REVOLUTE", part, i == 1 ? 10 : (part - 1) * 100 + 3);
+    text += buf;
+  }
+  text += "ACCGRAV/ JGRAV=-9.81\nEND\n";
+  return text;
+}
+
+struct Mechanism {
+  model::Model model;
+  std::unique_ptr<mechanics::MultibodySystem> system;
+  Eigen::VectorXd y, yp;
+};
+
+std::unique_ptr<Mechanism> assemble(const std::string& text) {
+  auto m = std::make_unique<Mechanism>();
+  language::Dataset ds;
+  Diagnostics d;
+  language::readDatasetText(text, "model.adm", ds, d);
+  EXPECT_TRUE(model::buildModel(ds, m->model, d));
+  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
+  m->system = std::make_unique<mechanics::MultibodySystem>(m->model);
+  m->y = m->system->initialState();
+  mechanics::removeRedundantConstraints(*m->system, m->y);
+  EXPECT_TRUE(mechanics::assemblePositions(*m->system, 0.0, m->y, 1e-12, 25).converged);
+  mechanics::solveVelocities(*m->system, 0.0, m->y);
+  EXPECT_TRUE(mechanics::solveAccelerations(*m->system, 0.0, m->y, m->yp));
+  return m;
+}
+
+MersonSettings settingsFor(double error, double hmax) {
+  MersonSettings s;
+  s.error = error;
+  s.hmax = hmax;
+  s.hinit = 1e-4;
+  return s;
+}
+
+struct PendulumResult {
+  double dx, dy;
+  solvers::IntegratorStatistics stats;
+};
+
+PendulumResult pendulumAt(double error, double hmax) {
+  auto m = assemble(kPendulum);
+  MersonIntegrator merson(*m->system, settingsFor(error, hmax));
+  merson.start(0.0, m->y, m->yp);
+  EXPECT_TRUE(merson.advanceTo(1.0)) << merson.failure().reason;
+  EXPECT_DOUBLE_EQ(merson.t(), 1.0);
+  EXPECT_FALSE(merson.stiffnessDetected());
+  return {merson.y()(StateLayout::kR) - kX1, merson.y()(StateLayout::kR + 1) - kY1,
+          merson.statistics()};
+}
+
+// With HMAX = 0.1 (as the other integrators' pendulum tests) the end point is within 1e-6 of
+// the test-set value at every ERROR: the model's own offset (-9.2e-7 in y, docs/integrators.md,
+// "The pendulum model's own offset") leaves 8e-8 of that.
+TEST(Merson, PendulumMatchesTheTestSet) {
+  for (const double error : {1e-3, 1e-8}) {
+    const PendulumResult r = pendulumAt(error, 0.1);
+    std::printf("MERSON pendulum ERROR=%.0e HMAX=0.1: x(1) error %.2e, y(1) error %.2e, %ld "
+                "steps, %ld evaluations\n",
+                error, r.dx, r.dy, r.stats.steps, r.stats.residualEvaluations);
+    EXPECT_NEAR(r.dx, 0.0, 1e-6);
+    EXPECT_NEAR(r.dy, 0.0, 1e-6);
+    EXPECT_EQ(r.stats.jacobianEvaluations, 0);
+  }
+}
+
+// Order check without HMAX: the error against a run at ERROR = 1e-12 (the model's offset
+// cancels) falls with ERROR, at least 10x per 100x, and stays within ERROR.
+TEST(Merson, PendulumErrorFallsWithError) {
+  const double inf = std::numeric_limits<double>::infinity();
+  const PendulumResult reference = pendulumAt(1e-12, inf);
+  double previous = 1.0;
+  for (const double error : {1e-3, 1e-5, 1e-7, 1e-9}) {
+    const PendulumResult r = pendulumAt(error, inf);
+    const double e = std::hypot(r.dx - reference.dx, r.dy - reference.dy);
+    std::printf("MERSON pendulum ERROR=%.0e: error %.2e against ERROR=1e-12, %ld steps, %ld "
+                "rejected, %ld evaluations\n",
+                error, e, r.stats.steps, r.stats.rejectedSteps, r.stats.residualEvaluations);
+    EXPECT_LT(e, error);
+    EXPECT_LT(e, 0.1 * previous);
+    previous = e;
+  }
+}
+
+double springDamperExact(double t) {
+  const double wd = std::sqrt(99.0);
+  return 0.1 * std::exp(-t) * (std::cos(wd * t) + std::sin(wd * t) / wd);
+}
+
+// ERROR = 1e-8 per step on positions and velocities; over ~2 s of steps the global error stays
+// near ERROR. The midpoints use the cubic Hermite, third order: its error ~h^4 |x''''| / 384
+// is of the order of the step's own error at these steps (measured below).
+TEST(Merson, SpringDamperFollowsTheClosedFormAtStepsAndInside) {
+  auto m = assemble(kSpringDamper);
+  MersonIntegrator merson(*m->system, settingsFor(1e-8, 0.01));
+  merson.start(0.0, m->y, m->yp);
+  double worstStep = 0.0, worstInside = 0.0;
+  while (merson.t() < 2.0) {
+    ASSERT_TRUE(merson.step(2.0)) << merson.failure().reason;
+    worstStep = std::max(worstStep, std::abs(merson.y()(StateLayout::kR + 2) - 1.0 -
+                                             springDamperExact(merson.t())));
+    const double s = 0.5 * (merson.previousTime() + merson.t());
+    Eigen::VectorXd y, yp;
+    merson.interpolate(s, y, yp);
+    worstInside =
+        std::max(worstInside, std::abs(y(StateLayout::kR + 2) - 1.0 - springDamperExact(s)));
+  }
+  std::printf("MERSON spring-damper: worst error at steps %.2e, at step midpoints %.2e, "
+              "%ld steps\n",
+              worstStep, worstInside, merson.statistics().steps);
+  EXPECT_LT(worstStep, 1e-7);
+  EXPECT_LT(worstInside, 1e-6);
+  EXPECT_FALSE(merson.stiffnessDetected());
+}
+
+double chainEnergy(const mechanics::MultibodySystem& system, const Eigen::VectorXd& y) {
+  const StateLayout& l = system.layout();
+  const Eigen::Vector3d inertia(1e-4, 1.0 / 12.0, 1.0 / 12.0);
+  double energy = 0.0;
+  for (int b = 0; b < l.bodies; ++b) {
+    const int o = l.body(b);
+    const Eigen::Vector3d v = y.segment<3>(o + StateLayout::kV);
+    const Eigen::Vector3d w = y.segment<3>(o + StateLayout::kW);
+    energy += 0.5 * v.squaredNorm() + 0.5 * w.dot(inertia.cwiseProduct(w)) +
+              9.81 * y(o + StateLayout::kR + 1);
+  }
+  return energy;
+}
+
+// An undamped planar chain of 8 links over 10 s: energy (initially 0) drifts by the integration
+// error only, and the constraints hold at every output to the projection threshold
+// (projected after every step onto |Phi| <= 1e-4 ERROR) plus what one step adds.
+TEST(Merson, PlanarChainConservesEnergyAndHoldsItsConstraints) {
+  auto m = assemble(chainDataset(8, false));
+  const double error = 1e-6;
+  MersonIntegrator merson(*m->system, settingsFor(error, 1e30));
+  mechanics::IndexOneDynamics check(*m->system);
+  merson.start(0.0, m->y, m->yp);
+  const double e0 = chainEnergy(*m->system, m->y);
+  double worstEnergy = 0.0, worstPosition = 0.0, worstVelocity = 0.0;
+  for (int k = 1; k <= 100; ++k) {
+    const double t = 0.1 * k;
+    ASSERT_TRUE(merson.advanceTo(t)) << merson.failure().reason;
+    worstEnergy = std::max(worstEnergy, std::abs(chainEnergy(*m->system, merson.y()) - e0));
+    worstPosition = std::max(worstPosition, check.positionViolation(t, merson.y()));
+    worstVelocity = std::max(worstVelocity, check.velocityViolation(t, merson.y()));
+  }
+  std::printf("MERSON planar chain N=8, 10 s, ERROR=1e-6: energy drift %.2e J (of potential "
+              "range %.1f J), |Phi| %.2e, |C u - nu| %.2e, %ld steps, %ld evaluations, "
+              "%ld projections\n",
+              worstEnergy, 9.81 * 32.0, worstPosition, worstVelocity, merson.statistics().steps,
+              merson.statistics().residualEvaluations, merson.projections());
+  // Energy: the chain exchanges ~300 J between potential and kinetic energy; 1e-3 J is a
+  // relative 3e-6, three orders above ERROR per step over ~1000 steps of mostly cancelling
+  // errors would allow more, so this is a meaningful bound.
+  EXPECT_LT(worstEnergy, 1e-3);
+  EXPECT_LT(worstPosition, 0.2 * error);
+  EXPECT_LT(worstVelocity, 0.2 * error);
+}
+
+// A spatial chain of 5 links over 2 s: MERSON at ERROR = 1e-9 and GSTIFF (variable-order BDF
+// on the index-3 DAE, an independent method and formulation) at 1e-9 agree on every body
+// position to 1e-5. Measured 1.0e-6 over positions that move by metres: the two methods' global
+// errors at that tolerance after ~600 and ~1800 steps; the bound leaves 10x for round-off.
+TEST(Merson, SpatialChainAgreesWithGstiffAtTightTolerance) {
+  auto m = assemble(chainDataset(5, true));
+  MersonIntegrator merson(*m->system, settingsFor(1e-9, 1e30));
+  merson.start(0.0, m->y, m->yp);
+  MultibodyDae dae(*m->system);
+  solvers::BdfSettings bs;
+  bs.error = 1e-9;
+  bs.hmax = 0.01;
+  bs.hinit = 1e-5;
+  solvers::BdfIntegrator gstiff(dae, bs);
+  gstiff.start(0.0, m->y, m->yp);
+  double worst = 0.0, outOfPlane = 0.0;
+  for (int k = 1; k <= 20; ++k) {
+    const double t = 0.1 * k;
+    ASSERT_TRUE(merson.advanceTo(t)) << merson.failure().reason;
+    ASSERT_TRUE(gstiff.advanceTo(t)) << gstiff.failure().reason;
+    for (int b = 0; b < m->system->layout().bodies; ++b) {
+      const int o = m->system->layout().body(b);
+      worst = std::max(worst, (merson.y().segment<3>(o) - gstiff.y().segment<3>(o)).norm());
+      outOfPlane = std::max(outOfPlane, std::abs(merson.y()(o + 2)));
+    }
+  }
+  std::printf("MERSON vs GSTIFF spatial chain N=5, 2 s: worst position difference %.2e "
+              "(out-of-plane excursion %.2f), MERSON %ld steps, GSTIFF %ld steps\n",
+              worst, outOfPlane, merson.statistics().steps, gstiff.statistics().steps);
+  EXPECT_GT(outOfPlane, 0.1);  // the motion is really spatial
+  EXPECT_LT(worst, 1e-5);
+}
+
+TEST(Merson, RefusesDiffStatesNamingTheRemedy) {
+  std::string text = kSpringDamper;
+  text.insert(text.find("END"), "DIFF/1, IC=0, FUNCTION=-2*DIF(1)+DZ(20,10)\n");
+  auto m = assemble(text);
+  MersonIntegrator merson(*m->system, settingsFor(1e-6, 0.01));
+  merson.start(0.0, m->y, m->yp);
+  EXPECT_FALSE(merson.step(1.0));
+  std::printf("MERSON on DIFF: %s\n", merson.failure().reason.c_str());
+  EXPECT_NE(merson.failure().reason.find("DIFF"), std::string::npos);
+  EXPECT_NE(merson.failure().reason.find("GSTIFF"), std::string::npos);
+}
+
+TEST(Merson, WarnsOnAStiffModelAndNamesTheRemedy) {
+  auto m = assemble(kStiffSpring);
+  MersonIntegrator merson(*m->system, settingsFor(1e-3, 0.01));
+  merson.start(0.0, m->y, m->yp);
+  ASSERT_TRUE(merson.advanceTo(0.05)) << merson.failure().reason;
+  std::printf("MERSON stiff spring: spectral radius %.3e, %ld steps, %ld rejected, warning: %s\n",
+              merson.spectralRadius(), merson.statistics().steps,
+              merson.statistics().rejectedSteps,
+              merson.warnings().empty() ? "(none)" : merson.warnings().front().c_str());
+  // Eigenvalues -sqrt(k/m) = -1e4 (double, defective): power iteration on a Jordan block
+  // converges like 1/k, not geometrically; after 8 iterations of J^2 it is 7 % high, hence 10 %.
+  EXPECT_NEAR(merson.spectralRadius(), 1e4, 1e3);
+  EXPECT_TRUE(merson.stiffnessDetected());
+  ASSERT_EQ(merson.warnings().size(), 1u);
+  EXPECT_NE(merson.warnings().front().find("GSTIFF"), std::string::npos);
+  EXPECT_NEAR(merson.y()(StateLayout::kR + 2), 1.0, 1e-3);
+}
+
+// The benchmark chains are not stiff for MERSON: no warning on the planar chain above.
+TEST(Merson, NoStiffnessWarningOnAnUndampedChain) {
+  auto m = assemble(chainDataset(10, false));
+  MersonIntegrator merson(*m->system, settingsFor(1e-4, 1e30));
+  merson.start(0.0, m->y, m->yp);
+  ASSERT_TRUE(merson.advanceTo(5.0)) << merson.failure().reason;
+  std::printf("MERSON planar chain N=10, ERROR=1e-4: spectral radius %.3e, last step %.3e "
+              "(h rho %.2f), %ld steps\n",
+              merson.spectralRadius(), merson.statistics().stepSize,
+              merson.spectralRadius() * merson.statistics().stepSize, merson.statistics().steps);
+  EXPECT_FALSE(merson.stiffnessDetected());
+}
+
+// Through the openmss program: the banner names the method, two runs write the same .req
+// byte for byte (no state survives between runs, nothing depends on the clock), and KMAX is
+// refused with a diagnostic.
+TEST(MersonRun, CommandLineRunsAreReproducibleAndNameTheMethod) {
+  namespace fs = std::filesystem;
+  using openmss::testing::run;
+  using openmss::testing::slurp;
+  using openmss::testing::write;
+  const fs::path dir = openmss::testing::scratch("merson");
+  std::string adm = chainDataset(5, false);
+  adm.insert(adm.find("END"), "REQUEST/1, DISPLACEMENT, I=603, J=10\nOUTPUT/REQSAVE\n");
+  write(dir / "chain.adm", adm);
+  for (const char* name : {"a", "b"})
+    write(dir / (std::string(name) + ".acf"),
+          std::string("chain\n") + name +
+              "\nINTEGRATOR/MERSON, ERROR=1e-5\nSIMULATE/DYNAMIC, END=2, STEPS=20\nSTOP\n");
+  const auto ra = run("run a.acf --quiet", dir);
+  ASSERT_EQ(ra.status, 0) << ra.output;
+  const auto rb = run("run b.acf --quiet", dir);
+  ASSERT_EQ(rb.status, 0) << rb.output;
+  const std::string reqA = slurp(dir / "a.req"), reqB = slurp(dir / "b.req");
+  EXPECT_GT(reqA.size(), 1000u);
+  EXPECT_EQ(reqA, reqB);
+  const std::string msg = slurp(dir / "a.msg");
+  EXPECT_NE(msg.find("Performing Dynamic Simulation using MERSON I3 Integrator"),
+            std::string::npos)
+      << msg;
+  write(dir / "k.acf", "chain\nk\nINTEGRATOR/MERSON, KMAX=4\nSIMULATE/DYNAMIC, END=1, STEPS=10\n"
+                       "STOP\n");
+  const auto rk = run("run k.acf --quiet", dir);
+  EXPECT_NE(rk.output.find("KMAX does not apply"), std::string::npos) << rk.output;
+}
+
+}  // namespace
+}  // namespace openmss::analysis
