@@ -250,18 +250,23 @@ void BM_ConstraintRows(benchmark::State& state) {
   const mechanics::ConstraintRows cr(*c.system, rows);
   std::vector<double> values(cr.columns().size()), gamma(rows.size()), phi(rows.size()),
       nu(rows.size());
-  const bool valuesOnly = state.range(1) == 1;
+  // 0: C and gamma; 1: Phi and nu; 2: C alone; 3: gamma alone (as projectAndEvaluate calls it).
+  const auto mode = state.range(1);
+  double* valuesOut = mode == 3 ? nullptr : values.data();
+  double* gammaOut = mode == 2 ? nullptr : gamma.data();
   for (auto _ : state) {
-    if (valuesOnly) cr.values(0.0, c.y.data(), phi.data(), nu.data());
-    else cr.evaluate(0.0, c.y.data(), values.data(), gamma.data());
+    if (mode == 1) cr.values(0.0, c.y.data(), phi.data(), nu.data());
+    else cr.evaluate(0.0, c.y.data(), valuesOut, gammaOut);
     benchmark::DoNotOptimize(values.data());
+    benchmark::DoNotOptimize(gamma.data());
     benchmark::DoNotOptimize(phi.data());
   }
   count(state, c);
   state.counters["rows"] = static_cast<double>(rows.size());
-  state.SetLabel(valuesOnly ? "values" : "evaluate");
+  const char* labels[] = {"evaluate", "values", "rows only", "gamma only"};
+  state.SetLabel(labels[static_cast<size_t>(mode)]);
 }
-BENCHMARK(BM_ConstraintRows)->ArgsProduct({{10, 100, 1000}, {0, 1}})
+BENCHMARK(BM_ConstraintRows)->ArgsProduct({{10, 100, 1000}, {0, 1, 2, 3}})
     ->Unit(benchmark::kMicrosecond);
 
 // IndexOneDynamics (mechanics/index_one_dynamics.hpp): one evaluation of the index-1 equations
@@ -280,8 +285,9 @@ void BM_IndexOneEvaluate(benchmark::State& state) {
 BENCHMARK(BM_IndexOneEvaluate)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
 
 // The projection after a step: every body moved and turned by ~1e-6 (positions and velocities
-// off their manifolds), projected to 1e-10 with the factorisation of an evaluation at the
-// unperturbed state (as after the last stage of a step); the copy and perturbation are timed
+// off their manifolds), the positions projected to 1e-10 with the factorisation of an
+// evaluation at the unperturbed state (as after the last stage of a step), the velocities with
+// S formed at the projected positions (one factorisation); the copy and perturbation are timed
 // too (O(N), small).
 void BM_IndexOneProject(benchmark::State& state) {
   Chain& c = chain(static_cast<int>(state.range(0)));
@@ -305,5 +311,42 @@ void BM_IndexOneProject(benchmark::State& state) {
       static_cast<double>(dynamics.factorizations() - before), benchmark::Counter::kAvgIterations);
 }
 BENCHMARK(BM_IndexOneProject)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+// What an explicit integrator does after each accepted step: project the new state and
+// evaluate there (the next step's first stage). Second argument 0: project() then evaluate();
+// 1: the fused projectAndEvaluate(), which shares C and S between the two. The state is the
+// one of BM_IndexOneProject, the position tolerance MERSON's at ERROR = 1e-4 (1e-8); each
+// iteration starts from the factorisation the previous one left (at the projected state).
+void BM_IndexOneProjectAndEvaluate(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  const bool fused = state.range(1) == 1;
+  mechanics::IndexOneDynamics dynamics(*c.system);
+  Eigen::VectorXd y = c.y, yp = c.yp;
+  dynamics.evaluate(0.0, y, yp);
+  const mechanics::StateLayout& l = c.system->layout();
+  Eigen::VectorXd delta(6 * l.bodies);
+  for (Eigen::Index i = 0; i < delta.size(); ++i)
+    delta(i) = 1e-6 * std::sin(1.7 * static_cast<double>(i));
+  Eigen::VectorXd moved = c.y;
+  mechanics::applyBodyCorrection(l, delta, moved);
+  for (int b = 0; b < l.bodies; ++b) moved(l.body(b) + mechanics::StateLayout::kW + 2) += 1e-3;
+  const long before = dynamics.factorizations();
+  for (auto _ : state) {
+    y = moved;
+    if (fused) {
+      benchmark::DoNotOptimize(dynamics.projectAndEvaluate(0.0, y, yp, 1e-8));
+    } else {
+      benchmark::DoNotOptimize(dynamics.project(0.0, y, 1e-8));
+      benchmark::DoNotOptimize(dynamics.evaluate(0.0, y, yp));
+    }
+    benchmark::DoNotOptimize(yp.data());
+  }
+  count(state, c);
+  state.counters["factorizations"] = benchmark::Counter(
+      static_cast<double>(dynamics.factorizations() - before), benchmark::Counter::kAvgIterations);
+  state.SetLabel(fused ? "projectAndEvaluate" : "project+evaluate");
+}
+BENCHMARK(BM_IndexOneProjectAndEvaluate)->ArgsProduct({{10, 100, 1000}, {0, 1}})
+    ->Unit(benchmark::kMicrosecond);
 
 }  // namespace

@@ -16,13 +16,29 @@ using mechanics::StateLayout;
 constexpr int kPerBody = 13;
 
 // Step-size controller. The estimate h/30 (2 k1 - 9 k3 + 8 k4 - k5) behaves like h^5 on
-// smooth problems, hence the exponent 1/5 (the prototype that matched Simbody's RK-Merson step
-// counts used it); 0.9 keeps the next step's predicted error below the tolerance; growth and
-// shrink bounds keep one odd estimate from moving the step by more than 5x.
+// smooth problems, hence gains in units of 1/5. On long chains the step sits at the stability
+// limit of the fastest mode, where the estimate rises steeply with h; the elementary controller
+// h 0.9 err^-1/5 overshot there and 25-33 % of the attempts were rejected. Gustafsson's PI
+// controller (Hairer-Wanner II, IV.2) h_new = h (theta/err_n)^kI (err_{n-1}/err_n)^kP with
+// kI = 0.3/5, kP = 0.4/5 damps that oscillation: the proportional factor brakes as soon as the
+// error rises from one step to the next, before a rejection. theta = 0.9^5 keeps the error the
+// steps aim at where the elementary controller's equilibrium was (accuracy per step unchanged).
+// Measured against other gains in docs/integrators.md ("MERSON", step size). After a rejection
+// the elementary rule shrinks the step (at most to 0.9x, at least 0.2x); the shrink and growth
+// bounds keep one odd estimate from moving the step by more than 5x.
 constexpr double kSafety = 0.9;
-constexpr double kExponent = 0.2;
+constexpr double kExponent = 0.2;      // elementary control: after a rejection and the HINIT rule
+constexpr double kTargetError = 0.59;  // 0.9^5: the elementary controller's equilibrium
+constexpr double kIntegralGain = 0.06;
+constexpr double kProportionalGain = 0.08;
 constexpr double kMaxGrowth = 5.0;
 constexpr double kMaxShrink = 0.2;
+// The step after a rejection grows by at most this factor (Gustafsson): the rejected size is
+// known to be too large, growing back to it invites the next rejection.
+constexpr double kGrowthAfterRejection = 1.0;
+// err_{n-1} is floored here so that one exceptionally small estimate (a step landing on an
+// output time) does not throttle the next step.
+constexpr double kPreviousErrorFloor = 1e-4;
 // A step that would leave less than this share of itself before the output time is stretched
 // to land on it (instead of a sliver of a step after it).
 constexpr double kLandingStretch = 1.05;
@@ -32,17 +48,42 @@ constexpr double kLandingStretch = 1.05;
 constexpr double kProjectionTightening = 1e-2;
 
 // Kutta-Merson's stability region reaches about -3.5 on the negative real axis and 3.46 on
-// the imaginary axis. Steps with h rho beyond kStiffStepRatio (70 % of that bound) are held by
-// the stability of the fastest mode, not by accuracy: a mode that moves needs h |lambda| ~< 1
-// for a 4th-order method at any useful ERROR (its local error at h |lambda| = 2.5 is of the
-// order of the mode itself), so such a mode is one the method must not follow.
+// the imaginary axis. A step with h rho beyond kStiffStepRatio (70 % of that bound) is held by
+// the stability of the fastest mode rather than by the motion it resolves.
 constexpr double kStiffStepRatio = 2.5;
-// Accepted steps beyond that ratio before the warning (a start-up transient is not stiffness).
-constexpr long kStiffStepsBeforeWarning = 20;
-// Accepted steps between estimates of the spectral radius, and power iterations per estimate
-// (two evaluations each).
+// Being held by stability is not yet stiffness in the sense that matters to the user: on long
+// pendulum chains the fast modes carry real motion, the held steps are what that motion needs,
+// and an implicit method (lower order, a Newton iteration per step) takes more, not fewer,
+// steps (planar N=1000, ERROR=1e-4: GSTIFF 6002 steps, MERSON 1181). The warning asks for
+// steps that accuracy alone would allow kAccuracyRoom times larger. That step is estimated
+// without the fast mode's help: over a window of kWindowSteps accepted steps (span H), a cubic
+// through the states at 0, 1/4, 3/4 and 1 of the window predicts the state at 1/2; the
+// discrepancy d (in units of ERROR (1 + |x|), largest component) is the error of a cubic over
+// span H and scales like H^4, so H d^(-1/4) is the span over which a cubic - the motion as a
+// 3rd-4th order step sees it - stays within ERROR. States only, no slopes: at the stability
+// limit the controller keeps the fast mode at an amplitude of about ERROR (it grows h until
+// the mode's error estimate reaches the tolerance), which enters d as at most 2.7x that
+// amplitude, while slopes would carry it amplified by H rho. Measured (docs/integrators.md,
+// "MERSON", stiffness): k/m = 1e8 spring at rest, d ~ 0.4, ratio 81: warns; planar N=1000 at
+// 1e-4, d ~ 100 whatever the window (real fast motion), ratio 14-22: no warning, and GSTIFF
+// indeed takes 5x more steps there; at 1e-3 the ratio passes 30, and GSTIFF takes 126 steps
+// against 1181.
+constexpr double kAccuracyRoom = 30.0;
+constexpr long kWindowSteps = 64;
+// A window counts when at least kHeldShare of its steps are held by stability (the others:
+// steps shortened to land on an output time or after a rejection), and the warning needs
+// kStiffWindowsBeforeWarning such windows in a row (a start-up transient is not stiffness).
+constexpr double kHeldShare = 0.75;
+constexpr long kStiffWindowsBeforeWarning = 1;
+// Accepted steps between estimates of the spectral radius. Power iterations (two evaluations
+// each): kPowerIterations from a fixed start vector for the first estimate; later estimates
+// start from the previous dominant vector, which the slowly changing Jacobian leaves nearly
+// converged, and stop once the estimate moves by less than kPowerTolerance (at least
+// kWarmIterations, at most kPowerIterations).
 constexpr long kStepsBetweenEstimates = 200;
 constexpr int kPowerIterations = 8;
+constexpr int kWarmIterations = 2;
+constexpr double kPowerTolerance = 0.02;
 
 std::string format(const char* pattern, double value) {
   char buf[64];
@@ -61,12 +102,14 @@ MersonIntegrator::~MersonIntegrator() = default;
 void MersonIntegrator::gather(const Eigen::VectorXd& y, Eigen::VectorXd& x) const {
   const StateLayout& l = system_.layout();
   x.resize(kPerBody * l.bodies);
-  for (int b = 0; b < l.bodies; ++b) x.segment<kPerBody>(kPerBody * b) = y.segment<kPerBody>(l.body(b));
+  for (int b = 0; b < l.bodies; ++b)
+    x.segment<kPerBody>(kPerBody * b) = y.segment<kPerBody>(l.body(b));
 }
 
 void MersonIntegrator::scatter(const Eigen::VectorXd& x, Eigen::VectorXd& y) const {
   const StateLayout& l = system_.layout();
-  for (int b = 0; b < l.bodies; ++b) y.segment<kPerBody>(l.body(b)) = x.segment<kPerBody>(kPerBody * b);
+  for (int b = 0; b < l.bodies; ++b)
+    y.segment<kPerBody>(l.body(b)) = x.segment<kPerBody>(kPerBody * b);
 }
 
 bool MersonIntegrator::derivative(double t, const Eigen::VectorXd& x, Eigen::VectorXd& f) const {
@@ -84,8 +127,9 @@ void MersonIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::
   yWork_ = y0;
   ypWork_ = yp0;
   failure_ = {};
-  stiffSteps_ = 0;
   stepsSinceEstimate_ = 0;
+  previousError_ = 1.0;
+  rejectedLast_ = false;
   // Statistics and warnings run on over restarts (SENSOR): they describe the whole run.
   stats_.order = 4;
   const double hmax = settings_.hmax > 0 ? settings_.hmax : std::numeric_limits<double>::infinity();
@@ -110,6 +154,8 @@ void MersonIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::
   xPrevious_ = x_;
   fPrevious_ = f_;
   estimateSpectralRadius();
+  restartStiffnessWindow();
+  stiffWindows_ = 0;
 }
 
 bool MersonIntegrator::setNextStepSize(double h) {
@@ -124,16 +170,22 @@ bool MersonIntegrator::acceptState(double t, const Eigen::VectorXd& x) {
   // Projection when the drift of the index-1 form (it keeps only the acceleration constraints)
   // has reached a share of ERROR; with a share of 0, after every step.
   const double limit = settings_.projectionShare * settings_.error;
-  const bool project =
-      limit <= 0.0 || dynamics_->positionViolation(t, y_) > limit ||
-      dynamics_->velocityViolation(t, y_) > limit;
+  const bool project = limit <= 0.0 || dynamics_->positionViolation(t, y_) > limit ||
+                       dynamics_->velocityViolation(t, y_) > limit;
+  ++stats_.residualEvaluations;
   if (project) {
     const double tolerance =
         std::max(kProjectionTightening * std::max(limit, 1e-2 * settings_.error), 1e-13);
-    if (dynamics_->project(t, y_, tolerance)) ++projections_;
+    // One call: the positions' projection, then one C and one factorisation at the projected
+    // positions for both the velocities' projection and the next step's slopes
+    // (docs/theory.md §9f).
+    bool projected = false;
+    const bool evaluated = dynamics_->projectAndEvaluate(t, y_, yp_, tolerance, &projected);
+    if (projected) ++projections_;
+    if (!evaluated) return false;
+  } else if (!dynamics_->evaluate(t, y_, yp_)) {
+    return false;
   }
-  ++stats_.residualEvaluations;
-  if (!dynamics_->evaluate(t, y_, yp_)) return false;
   gather(y_, x_);
   gather(yp_, f_);
   return true;
@@ -194,8 +246,14 @@ bool MersonIntegrator::step(double tout) {
       }
       ++stats_.steps;
       stats_.stepSize = h;
-      const double ideal = kSafety * std::pow(std::max(errorNorm, 1e-10), -kExponent);
-      double next = h * std::clamp(ideal, kMaxShrink, kMaxGrowth);
+      const double error = std::max(errorNorm, 1e-10);
+      const double ideal =
+          std::pow(kTargetError / error, kIntegralGain) *
+          std::pow(std::max(previousError_, kPreviousErrorFloor) / error, kProportionalGain);
+      const double growthLimit = rejectedLast_ ? kGrowthAfterRejection : kMaxGrowth;
+      double next = h * std::clamp(ideal, kMaxShrink, growthLimit);
+      previousError_ = errorNorm;
+      rejectedLast_ = false;
       // A step shortened to land on tout does not shorten the next one beyond what its own
       // error allows.
       if (landing) next = std::max(next, std::min(h_, h * ideal));
@@ -207,21 +265,23 @@ bool MersonIntegrator::step(double tout) {
     }
     ++stats_.rejectedSteps;
     if (observingSteps() && ok)
-      notifyStep({solvers::StepInfo::Event::ErrorTestFailed, stats_.steps + 1, 4, t_, h, errorNorm});
+      notifyStep(
+          {solvers::StepInfo::Event::ErrorTestFailed, stats_.steps + 1, 4, t_, h, errorNorm});
     // After a rejection the step only shrinks; a failed evaluation (a stage state where the
     // KKT matrix is singular) quarters it.
     const double factor =
         ok ? std::clamp(kSafety * std::pow(errorNorm, -kExponent), kMaxShrink, kSafety) : 0.25;
     h_ = h * factor;
+    rejectedLast_ = true;
     if (h_ < hmin) {
       if (!ok)
         recordFailure("the KKT matrix is singular at t = " + format("%.6E", t_) +
                           " (every step down to HMIN reaches a singular configuration)",
                       h, nullptr);
       else
-        recordFailure("the local error stays above ERROR with steps down to HMIN = " +
-                          format("%.3E", hmin),
-                      h, &errors_);
+        recordFailure(
+            "the local error stays above ERROR with steps down to HMIN = " + format("%.3E", hmin),
+            h, &errors_);
       return false;
     }
   }
@@ -239,8 +299,7 @@ void MersonIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd
   const double h10 = th * (1.0 - th) * (1.0 - th);
   const double h01 = th * th * (3.0 - 2.0 * th);
   const double h11 = th * th * (th - 1.0);
-  const Eigen::VectorXd x =
-      h00 * xPrevious_ + (h10 * h) * fPrevious_ + h01 * x_ + (h11 * h) * f_;
+  const Eigen::VectorXd x = h00 * xPrevious_ + (h10 * h) * fPrevious_ + h01 * x_ + (h11 * h) * f_;
   y = y_;
   scatter(x, y);
   ++stats_.residualEvaluations;
@@ -256,8 +315,14 @@ void MersonIntegrator::estimateSpectralRadius() {
   // power iteration on J would rotate without converging; sqrt(|J^2 v| / |v|) -> rho.
   const Eigen::Index n = x_.size();
   if (n == 0) return;
-  Eigen::VectorXd v(n), jv, jjv, xPerturbed, fPerturbed;
-  for (Eigen::Index i = 0; i < n; ++i) v(i) = 1.0 + 0.5 * std::sin(static_cast<double>(i + 1));
+  const bool warm = powerVector_.size() == n;
+  if (!warm) {
+    powerVector_.resize(n);
+    for (Eigen::Index i = 0; i < n; ++i)
+      powerVector_(i) = 1.0 + 0.5 * std::sin(static_cast<double>(i + 1));
+  }
+  Eigen::VectorXd& v = powerVector_;
+  Eigen::VectorXd jv, jjv, xPerturbed, fPerturbed;
   const double scale = 1e-7 * (1.0 + x_.norm());
   auto apply = [&](const Eigen::VectorXd& direction, Eigen::VectorXd& out) {
     const double size = direction.norm();
@@ -270,34 +335,81 @@ void MersonIntegrator::estimateSpectralRadius() {
   };
   double estimate = 0.0;
   for (int k = 0; k < kPowerIterations; ++k) {
-    if (!apply(v, jv) || !apply(jv, jjv)) return;  // keep the last estimate
+    if (!apply(v, jv) || !apply(jv, jjv)) {  // keep the last estimate, restart cold next time
+      powerVector_.resize(0);
+      return;
+    }
     const double growth = jjv.norm() / v.norm();
+    const double previous = estimate;
     estimate = std::sqrt(growth);
     if (!(growth > 0)) break;
     v = jjv / jjv.norm();
+    if (warm && k + 1 >= kWarmIterations &&
+        std::abs(estimate - previous) <= kPowerTolerance * estimate)
+      break;
   }
+  ++spectralEstimates_;
   spectralRadius_ = estimate;
   stepsSinceEstimate_ = 0;
+}
+
+void MersonIntegrator::restartStiffnessWindow() {
+  windowTimes_.assign(1, t_);
+  windowStates_.assign(1, x_);
+  windowSteps_ = 0;
+  windowHeldSteps_ = 0;
+  windowStepSum_ = 0.0;
+}
+
+double MersonIntegrator::windowAccuracyStep() const {
+  // Cubic (Lagrange) through samples 0, 1, 3, 4 evaluated at the time of sample 2.
+  const int nodes[4] = {0, 1, 3, 4};
+  const double tm = windowTimes_[2];
+  Eigen::VectorXd predicted = Eigen::VectorXd::Zero(windowStates_[2].size());
+  for (int a : nodes) {
+    double weight = 1.0;
+    for (int b : nodes)
+      if (b != a) weight *= (tm - windowTimes_[b]) / (windowTimes_[a] - windowTimes_[b]);
+    predicted += weight * windowStates_[a];
+  }
+  const Eigen::VectorXd& actual = windowStates_[2];
+  double d = 0.0;
+  for (Eigen::Index i = 0; i < actual.size(); ++i)
+    d = std::max(
+        d, std::abs(actual(i) - predicted(i)) / (settings_.error * (1.0 + std::abs(actual(i)))));
+  const double span = windowTimes_[4] - windowTimes_[0];
+  const double hmax = settings_.hmax > 0 ? settings_.hmax : std::numeric_limits<double>::infinity();
+  const double step = d > 0 ? span * std::pow(d, -0.25) : std::numeric_limits<double>::infinity();
+  return std::min(step, hmax);
 }
 
 void MersonIntegrator::watchStiffness(double h) {
   if (++stepsSinceEstimate_ >= kStepsBetweenEstimates) estimateSpectralRadius();
   if (stiff_) return;
-  if (h * spectralRadius_ < kStiffStepRatio) {
-    stiffSteps_ = 0;
-    return;
-  }
-  if (++stiffSteps_ < kStiffStepsBeforeWarning) return;
+  ++windowSteps_;
+  windowStepSum_ += h;
+  if (h * spectralRadius_ >= kStiffStepRatio) ++windowHeldSteps_;
+  if (windowSteps_ % (kWindowSteps / 4) != 0) return;
+  windowTimes_.push_back(t_);
+  windowStates_.push_back(x_);
+  if (windowSteps_ < kWindowSteps) return;
+  const double meanStep = windowStepSum_ / static_cast<double>(windowSteps_);
+  accuracyStep_ = windowAccuracyStep();
+  heldStep_ = meanStep;
+  const bool held =
+      kHeldShare * static_cast<double>(windowSteps_) <= static_cast<double>(windowHeldSteps_);
+  restartStiffnessWindow();
+  stiffWindows_ = held && accuracyStep_ >= kAccuracyRoom * meanStep ? stiffWindows_ + 1 : 0;
+  if (stiffWindows_ < kStiffWindowsBeforeWarning) return;
   stiff_ = true;
   warnings_.push_back(
       "MERSON: the model is stiff. The equations of motion have an eigenvalue of magnitude " +
       format("%.3E", spectralRadius_) + " 1/s (time constant " +
-      format("%.3E", 1.0 / spectralRadius_) + " s) and the explicit steps (" + format("%.3E", h) +
-      " s at t = " + format("%.6E", t_) +
-      ") are held by its stability, not by accuracy. MERSON is meant for non-stiff models; "
-      "INTEGRATOR/GSTIFF (or WSTIFF, DSTIFF) is not bound by this mode: use it when the fast "
-      "mode is a stiff spring, bushing or contact (on long pendulum chains MERSON can still be "
-      "the faster method; compare the run times).");
+      format("%.3E", 1.0 / spectralRadius_) + " s) whose stability holds the explicit steps to " +
+      format("%.3E", meanStep) + " s (around t = " + format("%.6E", t_) +
+      "), while the motion would allow steps of about " + format("%.3E", accuracyStep_) +
+      " s for ERROR. INTEGRATOR/GSTIFF (or WSTIFF, DSTIFF) is not bound by this mode and can "
+      "take the larger steps.");
 }
 
 void MersonIntegrator::recordFailure(const std::string& reason, double h,

@@ -10,13 +10,12 @@
 // MERSON is for non-stiff models (pendulum chains, mechanisms without stiff bushings): each
 // step costs five evaluations and no Jacobian, and the step is bounded by the stability of
 // the fastest mode. The integrator estimates that mode and warns (warnings()) when the steps
-// are held by it, naming the remedy (GSTIFF).
+// are held by it far below what accuracy alone would allow, naming the remedy (GSTIFF).
 
+#include <Eigen/Dense>
 #include <memory>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "mechanics/index_one_dynamics.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -68,6 +67,11 @@ class MersonIntegrator final : public solvers::Integrator {
   // Largest |eigenvalue| of the ODE Jacobian at the last estimate (1/s).
   double spectralRadius() const { return spectralRadius_; }
   long projections() const { return projections_; }
+  long spectralEstimates() const { return spectralEstimates_; }
+  // Of the last complete stiffness window (32 accepted steps): the mean step taken and the step
+  // the motion would allow for accuracy alone (see merson_integrator.cpp, kAccuracyRoom).
+  double heldStep() const { return heldStep_; }
+  double accuracyStep() const { return accuracyStep_; }
 
  private:
   // x' = f(t, x) through the index-1 equations; false when the KKT matrix is singular.
@@ -77,6 +81,9 @@ class MersonIntegrator final : public solvers::Integrator {
   bool acceptState(double t, const Eigen::VectorXd& x);
   void estimateSpectralRadius();
   void watchStiffness(double h);
+  void restartStiffnessWindow();
+  // The step the motion of the current (complete) window would allow for accuracy alone.
+  double windowAccuracyStep() const;
   void recordFailure(const std::string& reason, double h, const Eigen::VectorXd* errors);
 
   const mechanics::MultibodySystem& system_;
@@ -92,10 +99,23 @@ class MersonIntegrator final : public solvers::Integrator {
   Eigen::VectorXd k2_, k3_, k4_, k5_, stage_, xNew_, errors_;
   mutable Eigen::VectorXd yWork_, ypWork_;
   long projections_ = 0;
-  // Stiffness watch.
+  // Step-size control: the error estimate of the last accepted step (the PI controller's
+  // err_{n-1}) and whether the last attempt was rejected.
+  double previousError_ = 1.0;
+  bool rejectedLast_ = false;
+  // Stiffness watch (the rule: merson_integrator.cpp, kAccuracyRoom).
   double spectralRadius_ = 0.0;
+  Eigen::VectorXd powerVector_;  // dominant direction of the last estimate (warm start)
+  long spectralEstimates_ = 0;
   long stepsSinceEstimate_ = 0;
-  long stiffSteps_ = 0;
+  // The current window of accepted steps: its sampled times and ODE states (every quarter).
+  std::vector<double> windowTimes_;
+  std::vector<Eigen::VectorXd> windowStates_;
+  long windowSteps_ = 0;
+  long windowHeldSteps_ = 0;  // steps so far held by stability (h rho >= kStiffStepRatio)
+  double windowStepSum_ = 0.0;
+  long stiffWindows_ = 0;                       // consecutive windows that meet the rule
+  double accuracyStep_ = 0.0, heldStep_ = 0.0;  // of the last completed window
   bool stiff_ = false;
   std::vector<std::string> warnings_;
 };

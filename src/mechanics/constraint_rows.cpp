@@ -147,17 +147,26 @@ void ConstraintRows::updateSlots(size_t group, bool jets) const {
 }
 
 void ConstraintRows::evaluate(double t, const double* y, double* values, double* gamma) const {
-  updateBodies(y, true);
+  // The jets (velocities and their products) only when gamma is wanted: the rows alone need
+  // the frames, gamma alone needs no side gradient.
+  const bool jets = gamma != nullptr;
+  updateBodies(y, jets);
   const auto& eqs = system_.constraints().equations();
   for (size_t g = 0; g + 1 < groupStart_.size(); ++g) {
     // The group's frames just before its rows read them (still in the first-level cache).
-    updateSlots(g, true);
+    updateSlots(g, jets);
     const Frame<double>* frames = frames_.data() + groupSlot_[g];
-    const Frame<Jet>* jets = jets_.data() + groupSlot_[g];
+    const Frame<Jet>* groupJets = jets_.data() + groupSlot_[g];
     for (int r = groupStart_[g]; r < groupStart_[g + 1]; ++r) {
       const auto ru = static_cast<size_t>(r);
       const int k = rows_[ru];
       const ConstraintEquation& eq = eqs[static_cast<size_t>(k)];
+      if (gamma) {
+        const double second = ConstraintSet::geometry(eq, groupJets).d.d;
+        const double f2 = eq.motion >= 0 ? system_.motionJet(k, t).d2 : 0.0;
+        gamma[r] = f2 - second;
+      }
+      if (!values) continue;
       // The row: the sides' derivatives summed per body, in marker order (two markers of one
       // equation may share a body), as constraintRowEntries sums them.
       std::fill(values + start_[ru], values + start_[ru + 1], 0.0);
@@ -170,9 +179,6 @@ void ConstraintRows::evaluate(double t, const double* y, double* values, double*
         double* out = values + side.offset;
         for (int dir = 0; dir < 6; ++dir) out[dir] = out[dir] + d[dir];
       }
-      const double second = ConstraintSet::geometry(eq, jets).d.d;
-      const double f2 = eq.motion >= 0 ? system_.motionJet(k, t).d2 : 0.0;
-      gamma[r] = f2 - second;
     }
   }
 }

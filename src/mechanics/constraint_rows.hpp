@@ -33,6 +33,8 @@ class ConstraintRows {
 
   // values[i]: the entries of C at y, in the order of columns(); gamma[r]: f''(t) of a motion
   // minus the second derivative of Phi_r along the current velocities at zero acceleration.
+  // Either may be null: C alone (it depends on positions only) skips the velocity jets, gamma
+  // alone (after a change of velocities only) skips the side gradients.
   void evaluate(double t, const double* y, double* values, double* gamma) const;
   // phi[r] = Phi_r(q, t); nu[r] = f'(t) of a motion, else 0 (C u = nu on the manifold).
   void values(double t, const double* y, double* phi, double* nu) const;

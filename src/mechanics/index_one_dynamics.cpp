@@ -63,19 +63,20 @@ void withSize(int n, Kernel&& kernel) {
   }
 }
 
-// target (ni x nj) (+)= a (ni x 6) b^T (b: nj x 6), all column-major.
+// target (ni x nj, column-major) (+)= a b^T with a (ni x 6) and b (nj x 6) row-major (each
+// row's six entries contiguous, as C's rows arrive).
 template <int N>
 void multiplyTransposed(int niRuntime, int nj, const double* a, const double* b, double* target,
                         bool assign) {
   const int ni = N > 0 ? N : niRuntime;
   for (int c = 0; c < nj; ++c) {
     double* t = target + ni * c;
-    if (assign)
-      for (int r = 0; r < ni; ++r) t[r] = 0.0;
-    for (int d = 0; d < 6; ++d) {
-      const double f = b[c + nj * d];
-      const double* ad = a + ni * d;
-      for (int r = 0; r < ni; ++r) t[r] += ad[r] * f;
+    const double* bc = b + 6 * c;
+    for (int r = 0; r < ni; ++r) {
+      const double* ar = a + 6 * r;
+      const double sum = ar[0] * bc[0] + ar[1] * bc[1] + ar[2] * bc[2] + ar[3] * bc[3] +
+                         ar[4] * bc[4] + ar[5] * bc[5];
+      t[r] = assign ? sum : t[r] + sum;
     }
   }
 }
@@ -122,7 +123,9 @@ struct IndexOneDynamics::Engine {
   explicit Engine(const MultibodySystem& system);
 
   // One (block, body) pair: the block's `rows` rows of C restricted to the body's 6 columns
-  // (dense, column-major, rows x 6) at `offset` in cDense and in w (W = C M^-1, same shape).
+  // (dense, row-major rows x 6: each row's six entries contiguous, as ConstraintRows delivers
+  // them, so filling it is a copy of 6-entry segments) at `offset` in cDense and in w
+  // (W = C M^-1, same shape).
   struct Incidence {
     int block = 0, body = 0, offset = 0, rows = 0;
   };
@@ -137,9 +140,11 @@ struct IndexOneDynamics::Engine {
     int source = 0, sourceRows = 0, other = 0, otherRows = 0, target = 0;
   };
 
-  // C at the state (entries in the order of rows.columns()) -> W, S and its factor. False when
-  // S is singular or not finite.
-  bool factor(const double* values);
+  // C at the state y (entries in the order of rows.columns()) -> W, S and its factor. False
+  // when S is singular or not finite. The positions of y are remembered (factoredAt).
+  bool factor(const double* values, const Eigen::VectorXd& y);
+  // Whether the factorisation is of C at exactly the positions (r, e) of y.
+  bool factoredAt(const Eigen::VectorXd& y) const;
   // x <- S^-1 x (x in block order).
   void solve(double* x) const;
   // out (6 per body) = -M^-1 C^T x, with the C of the last factorisation.
@@ -160,8 +165,11 @@ struct IndexOneDynamics::Engine {
   // vector; permutedRow[pos] is the row (index into rows) at that position.
   std::vector<int> blockStart, permutedRow, positionOf;
   std::vector<Incidence> incidences;
-  std::vector<int> scatter;        // entry i of rows.values -> index into cDense
-  std::vector<int> velocityIndex;  // entry i of rows.values -> index in y of its velocity
+  // Segment s of rows.values (entries 6 s .. 6 s + 5: one row, one body) -> index into cDense.
+  std::vector<int> segmentTarget;
+  // Segment s of rows.values -> index in y of its body's (v, w), six consecutive entries in
+  // the order of C's columns (state_layout.hpp: kW = kV + 3).
+  std::vector<int> segmentVelocity;
   std::vector<Contribution> contributions;
   // Factor storage: column j has its diagonal block (full, column-major) at diagOffset[j] and
   // the off-diagonal blocks offRow[s], offOffset[s] for s in offStart[j] .. offStart[j + 1] - 1.
@@ -171,6 +179,7 @@ struct IndexOneDynamics::Engine {
   std::vector<double> cDense, w, factorValues, sDiagonal, inverseDiagonal;
   std::vector<std::pair<int, int>> fillBlocks;  // (offset, entries) of blocks S has zero
   bool factored = false;
+  std::vector<double> factorPositions;  // r and e of every body at the last factorisation
   // Tests run the kernels with the block size at run time too (the path of blocks of more
   // than 6 rows, which the bundled models do not have): 0 selects it in withSize.
   bool runtimeSizeKernels = false;
@@ -255,22 +264,21 @@ IndexOneDynamics::Engine::Engine(const MultibodySystem& sys)
     }
   cDense.assign(dense, 0.0);
   w.assign(dense, 0.0);
-  scatter.assign(cols.size(), 0);
-  velocityIndex.assign(cols.size(), 0);
-  for (size_t i = 0; i < cols.size(); ++i) {
-    const int dir = cols[i] % 6;
-    velocityIndex[i] = sys.layout().body(cols[i] / 6) +
-                       (dir < 3 ? StateLayout::kV + dir : StateLayout::kW + dir - 3);
-  }
+  segmentTarget.assign(cols.size() / 6, 0);
+  static_assert(StateLayout::kW == StateLayout::kV + 3);
+  segmentVelocity.assign(cols.size() / 6, 0);
+  for (size_t i = 0; i < cols.size(); i += 6)
+    segmentVelocity[i / 6] = sys.layout().body(cols[i] / 6) + StateLayout::kV;
   for (int pos = 0; pos < m; ++pos) {
     const int r = permutedRow[pos];
     const int k = static_cast<int>(std::upper_bound(blockStart.begin(), blockStart.end(), pos) -
                                    blockStart.begin()) -
                   1;
     const int within = pos - blockStart[k];
-    for (int i = start[r]; i < start[r + 1]; ++i) {
+    // A row's entries come in whole bodies: six consecutive columns from direction 0.
+    for (int i = start[r]; i < start[r + 1]; i += 6) {
       const Incidence& inc = incidences[incidenceOf.at({k, cols[i] / 6})];
-      scatter[i] = inc.offset + within + inc.rows * (cols[i] % 6);
+      segmentTarget[i / 6] = inc.offset + 6 * within;
     }
   }
   // Symbolic block factorisation: the lower structure of each column is its neighbours after
@@ -341,9 +349,25 @@ IndexOneDynamics::Engine::Engine(const MultibodySystem& sys)
   x.assign(m, 0.0);
 }
 
-bool IndexOneDynamics::Engine::factor(const double* entries) {
+bool IndexOneDynamics::Engine::factoredAt(const Eigen::VectorXd& y) const {
+  if (!factored) return false;
+  const StateLayout& l = system.layout();
+  for (int b = 0; b < nb; ++b)
+    for (int i = 0; i < StateLayout::kV; ++i)
+      if (factorPositions[static_cast<size_t>(StateLayout::kV * b + i)] != y(l.body(b) + i))
+        return false;
+  return true;
+}
+
+bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::VectorXd& y) {
   factored = false;
-  for (size_t i = 0; i < scatter.size(); ++i) cDense[scatter[i]] = entries[i];
+  factorPositions.resize(static_cast<size_t>(StateLayout::kV * nb));
+  for (int b = 0; b < nb; ++b)
+    for (int i = 0; i < StateLayout::kV; ++i)
+      factorPositions[static_cast<size_t>(StateLayout::kV * b + i)] =
+          y(system.layout().body(b) + i);
+  for (size_t s = 0; s < segmentTarget.size(); ++s)
+    std::copy_n(entries + 6 * s, 6, cDense.data() + segmentTarget[s]);
   auto size = [&](int j) { return blockStart[j + 1] - blockStart[j]; };
   // W = C M^-1 per incidence: translations scaled by 1/m, rotations times J^-1 (symmetric).
   for (const Incidence& inc : incidences) {
@@ -352,11 +376,13 @@ bool IndexOneDynamics::Engine::factor(const double* entries) {
     const Eigen::Matrix3d& ji = inverseInertia[inc.body];
     const double* c = cDense.data() + inc.offset;
     double* wp = w.data() + inc.offset;
-    for (int i = 0; i < 3 * n; ++i) wp[i] = c[i] * im;
-    for (int d = 0; d < 3; ++d)
-      for (int r = 0; r < n; ++r)
-        wp[n * (3 + d) + r] =
-            c[n * 3 + r] * ji(0, d) + c[n * 4 + r] * ji(1, d) + c[n * 5 + r] * ji(2, d);
+    for (int r = 0; r < n; ++r) {
+      const double* cr = c + 6 * r;
+      double* wr = wp + 6 * r;
+      for (int d = 0; d < 3; ++d) wr[d] = cr[d] * im;
+      for (int d = 0; d < 3; ++d)
+        wr[3 + d] = cr[3] * ji(0, d) + cr[4] * ji(1, d) + cr[5] * ji(2, d);
+    }
   }
   for (const auto& [offset, count] : fillBlocks)
     std::fill_n(factorValues.begin() + offset, count, 0.0);
@@ -476,11 +502,8 @@ void IndexOneDynamics::Engine::correction(const double* v, Eigen::VectorXd& out)
     const double* vj = v + blockStart[inc.block];
     const double* wp = w.data() + inc.offset;
     double* o = out.data() + 6 * inc.body;
-    for (int d = 0; d < 6; ++d) {
-      double sum = 0.0;
-      for (int r = 0; r < n; ++r) sum += wp[r + n * d] * vj[r];
-      o[d] -= sum;
-    }
+    for (int r = 0; r < n; ++r)
+      for (int d = 0; d < 6; ++d) o[d] -= wp[6 * r + d] * vj[r];
   }
 }
 
@@ -491,18 +514,22 @@ double IndexOneDynamics::Engine::velocityResidual(const double* entries, const d
   const double* u = y.data();
   double worst = 0.0, size = 0.0;
   for (int r = 0; r < m; ++r) {
-    double cu = 0.0;
-    for (int i = start[r]; i < start[r + 1]; ++i) cu += entries[i] * u[velocityIndex[i]];
+    // Whole bodies: segment by segment, each body's six velocities read contiguously.
+    double cu = 0.0, magnitude = std::abs(rates[r]);
+    for (int i = start[r]; i < start[r + 1]; i += 6) {
+      const double* c = entries + i;
+      const double* ub = u + segmentVelocity[static_cast<size_t>(i / 6)];
+      for (int d = 0; d < 6; ++d) {
+        const double term = c[d] * ub[d];
+        cu += term;
+        // The size of the terms of C u: the round-off floor of the residual.
+        if (scale) magnitude += std::abs(term);
+      }
+    }
     const double v = cu - rates[r];
     if (residual) residual[positionOf[r]] = v;
     worst = std::max(worst, std::abs(v));
-    if (scale) {
-      // The size of the terms of C u: the round-off floor of the residual.
-      double magnitude = std::abs(rates[r]);
-      for (int i = start[r]; i < start[r + 1]; ++i)
-        magnitude += std::abs(entries[i] * u[velocityIndex[i]]);
-      size = std::max(size, magnitude);
-    }
+    size = std::max(size, magnitude);
   }
   if (scale) *scale = size;
   return worst;
@@ -544,14 +571,22 @@ bool IndexOneDynamics::evaluate(double t, Eigen::VectorXd& y, Eigen::VectorXd& y
     ++factorizations_;
     return solveAccelerations(system_, t, y, yp);
   }
+  if (g.m > 0) {
+    g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+    ++factorizations_;
+    if (!g.factor(g.values.data(), y)) return false;
+  }
+  return accelerationsFromFactor(t, y, yp);
+}
+
+bool IndexOneDynamics::accelerationsFromFactor(double t, Eigen::VectorXd& y, Eigen::VectorXd& yp) {
+  const StateLayout& l = system_.layout();
+  Engine& g = *engine_;
   // VARIABLE values first: applied forces may read them (§4a).
   if (l.userAlgebraic > 0 && !solveUserAlgebraic(system_, t, y).converged) return false;
   system_.appliedForces(t, y.data(), g.forces);
   const int m = g.m;
   if (m > 0) {
-    g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
-    ++factorizations_;
-    if (!g.factor(g.values.data())) return false;
     // S lambda = C M^-1 Q - gamma (from C u' = gamma and M u' = Q - C^T lambda).
     for (int pos = 0; pos < m; ++pos) g.x[pos] = -g.gamma[g.permutedRow[pos]];
     for (const Engine::Incidence& inc : g.incidences) {
@@ -559,8 +594,11 @@ bool IndexOneDynamics::evaluate(double t, Eigen::VectorXd& y, Eigen::VectorXd& y
       const double* wp = g.w.data() + inc.offset;
       const double* qb = g.forces.data() + 6 * inc.body;
       double* xj = g.x.data() + g.blockStart[inc.block];
-      for (int d = 0; d < 6; ++d)
-        for (int r = 0; r < n; ++r) xj[r] += wp[r + n * d] * qb[d];
+      for (int r = 0; r < n; ++r) {
+        const double* wr = wp + 6 * r;
+        xj[r] += wr[0] * qb[0] + wr[1] * qb[1] + wr[2] * qb[2] + wr[3] * qb[3] + wr[4] * qb[4] +
+                 wr[5] * qb[5];
+      }
     }
     g.solve(g.x.data());
     g.correction(g.x.data(), g.delta);  // -M^-1 C^T lambda
@@ -615,14 +653,48 @@ bool IndexOneDynamics::project(double t, Eigen::VectorXd& y, double positionTole
     solveVelocities(system_, t, y);
     return true;
   }
+  if (!projectPositions(t, y, positionTolerance)) return false;
+  // Velocities with C at the final positions (gamma is not needed: rows only).
+  g.rows.evaluate(t, y.data(), g.values.data(), nullptr);
+  return projectVelocities(y, false);
+}
+
+bool IndexOneDynamics::projectAndEvaluate(double t, Eigen::VectorXd& y, Eigen::VectorXd& yp,
+                                          double positionTolerance, bool* projected) {
+  const StateLayout& l = system_.layout();
+  Engine& g = *engine_;
+  if (projected) *projected = false;
+  if (g.m == 0 || g.baselineAccelerations || !g.massInvertible) {
+    // Nothing to share: no constraints, or evaluate() does not factor S.
+    const bool done = project(t, y, positionTolerance);
+    if (projected) *projected = done;
+    return evaluate(t, y, yp);
+  }
+  normaliseEulerParameters(l, y);
+  // Positions as project() does them (quasi-Newton on the factorisation at hand).
+  if (!projectPositions(t, y, positionTolerance)) return evaluate(t, y, yp);
+  normaliseEulerParameters(l, y);  // as evaluate() would before reading the positions
+  // C at the projected positions and the one factorisation the evaluation needs anyway; the
+  // velocity projection runs on it (exact: one solve), then gamma at the projected velocities
+  // (C does not depend on them, gamma does, quadratically).
+  g.rows.evaluate(t, y.data(), g.values.data(), nullptr);
+  ++factorizations_;
+  if (!g.factor(g.values.data(), y)) return false;
+  const bool velocitiesProjected = projectVelocities(y, true);
+  if (projected) *projected = velocitiesProjected;
+  g.rows.evaluate(t, y.data(), nullptr, g.gamma.data());
+  return accelerationsFromFactor(t, y, yp);
+}
+
+bool IndexOneDynamics::projectPositions(double t, Eigen::VectorXd& y, double positionTolerance) {
+  const StateLayout& l = system_.layout();
+  Engine& g = *engine_;
   // The factorisation of the last evaluation (a nearby state) serves while the Newton
   // iteration contracts fast; S is formed afresh at the current state when it does not.
-  bool current = false;  // g's factorisation belongs to the current positions
   auto refactor = [&]() {
-    g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+    g.rows.evaluate(t, y.data(), g.values.data(), nullptr);
     ++factorizations_;
-    current = g.factor(g.values.data());
-    return current;
+    return g.factor(g.values.data(), y);
   };
   g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
   auto largest = [&](const std::vector<double>& v) {
@@ -638,26 +710,31 @@ bool IndexOneDynamics::project(double t, Eigen::VectorXd& y, double positionTole
     g.solve(g.x.data());
     g.correction(g.x.data(), g.delta);  // dq = -M^-1 C^T S^-1 Phi
     applyBodyCorrection(l, g.delta, y);
-    current = false;
     g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
     const double next = largest(g.phi);
     if (!(next <= kContraction * error)) g.factored = false;  // poor contraction: refactor
     error = next;
   }
-  // Velocities: du = -M^-1 C^T S^-1 (C u - nu) with C at the final positions.
-  g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+  return true;
+}
+
+bool IndexOneDynamics::projectVelocities(Eigen::VectorXd& y, bool current) {
+  const StateLayout& l = system_.layout();
+  Engine& g = *engine_;
+  // du = -M^-1 C^T S^-1 (C u - nu), C (in g.values) and nu at the final positions.
   double scale = 0.0;
   double residual = g.velocityResidual(g.values.data(), g.nu.data(), y, g.x.data(), &scale);
   // Relative to the size of the terms of C u; the round-off floor is ~1e-16 of it.
   const double tolerance = 1e-12 * std::max(scale, 1e-300);
   for (int it = 0; residual > tolerance; ++it) {
     if (it == kMaxProjectionIterations) break;  // round-off floor: as good as it gets
-    if (!g.factored) {
-      // The last factorisation was at other positions: form S here (values hold C).
+    if (!current && !g.factoredAt(y)) {
+      // A factorisation at other positions would correct along M^-1 C_old^T: C u = nu would
+      // still be reached, but not by the least change. S is formed here (values hold C).
       ++factorizations_;
-      if (!g.factor(g.values.data())) return false;
-      current = true;
+      if (!g.factor(g.values.data(), y)) return false;
     }
+    current = true;
     g.solve(g.x.data());
     g.correction(g.x.data(), g.delta);
     for (int b = 0; b < l.bodies; ++b) {
@@ -665,10 +742,7 @@ bool IndexOneDynamics::project(double t, Eigen::VectorXd& y, double positionTole
       y.segment<3>(l.body(b) + StateLayout::kW) += g.delta.segment<3>(6 * b + 3);
     }
     const double next = g.velocityResidual(g.values.data(), g.nu.data(), y, g.x.data(), nullptr);
-    if (!(next <= kContraction * residual)) {
-      if (current) break;  // a fresh factorisation stalls only at round-off
-      g.factored = false;
-    }
+    if (!(next <= kContraction * residual)) break;  // an exact solve stalls only at round-off
     residual = next;
   }
   return std::isfinite(residual);
@@ -685,7 +759,7 @@ double IndexOneDynamics::positionViolation(double t, const Eigen::VectorXd& y) c
 double IndexOneDynamics::velocityViolation(double t, const Eigen::VectorXd& y) const {
   Engine& g = *engine_;
   g.rows.values(t, y.data(), g.phi.data(), g.nu.data());
-  g.rows.evaluate(t, y.data(), g.values.data(), g.gamma.data());
+  g.rows.evaluate(t, y.data(), g.values.data(), nullptr);
   return g.velocityResidual(g.values.data(), g.nu.data(), y, nullptr, nullptr);
 }
 

@@ -361,5 +361,29 @@ TEST(ConstraintRows, CallsDoNotDependOnEachOther) {
   EXPECT_EQ(g1, g2);
 }
 
+TEST(ConstraintRows, RowsAloneAndGammaAloneAreTheSameNumbers) {
+  // Either output may be left out (IndexOneDynamics::projectAndEvaluate: C before the velocity
+  // projection, gamma after it): what is computed is exactly what evaluate() computes with
+  // both, on every joint, primitive and motion kind and on the couplings.
+  for (const std::string& text : {everyKindDataSet(), std::string(kCoupled)}) {
+    const model::Model m = buildText(text);
+    const MultibodySystem s(m);
+    std::vector<int> all;
+    for (int k = 0; k < s.constraints().size(); ++k) all.push_back(k);
+    const ConstraintRows cr(s, all);
+    std::mt19937 rng(9);
+    for (int trial = 0; trial < 3; ++trial) {
+      const Eigen::VectorXd y = testing::randomState(s, rng);
+      std::vector<double> values(cr.columns().size()), gamma(all.size());
+      cr.evaluate(0.4, y.data(), values.data(), gamma.data());
+      std::vector<double> valuesAlone(values.size(), -1.0), gammaAlone(gamma.size(), -1.0);
+      cr.evaluate(0.4, y.data(), valuesAlone.data(), nullptr);
+      cr.evaluate(0.4, y.data(), nullptr, gammaAlone.data());
+      EXPECT_EQ(valuesAlone, values);
+      EXPECT_EQ(gammaAlone, gamma);
+    }
+  }
+}
+
 }  // namespace
 }  // namespace openmss::mechanics
