@@ -10,6 +10,8 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "analysis/predicted_residual.hpp"
+
 namespace openmss::analysis {
 namespace {
 
@@ -299,21 +301,7 @@ void AbamIntegrator::recordFailure(const std::string& reason, double h) {
   failure_.time = t_;
   failure_.stepSize = h;
   failure_.reason = reason;
-  // The equation that the step could not satisfy: the DAE residual at a forward-Euler
-  // prediction from the last accepted state (at that state itself every residual is zero).
-  const int n = system_.layout().size();
-  if (y_.size() != n || yp_.size() != n) return;
-  const Eigen::VectorXd yPredicted = y_ + h * yp_;
-  Eigen::VectorXd g(n);
-  system_.residual(t_ + h, yPredicted.data(), yp_.data(), g.data());
-  for (int i = 0; i < n; ++i) {
-    const double r = std::abs(g(i));
-    if (failure_.worstEquation < 0 || !std::isfinite(r) || r > failure_.worstResidual) {
-      failure_.worstEquation = i;
-      failure_.worstResidual = r;
-      if (!std::isfinite(r)) break;
-    }
-  }
+  notePredictedResidual(system_, t_, h, y_, yp_, failure_);
   // The variable with the largest weighted local error among the independent coordinates.
   Engine& e = *engine_;
   if (!e.cvode || CVodeGetEstLocalErrors(e.cvode, e.localErrors) != CV_SUCCESS ||

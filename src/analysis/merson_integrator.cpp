@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "analysis/predicted_residual.hpp"
 #include "mechanics/state_layout.hpp"
 
 namespace openmss::analysis {
@@ -418,22 +419,8 @@ void MersonIntegrator::recordFailure(const std::string& reason, double h,
   failure_.time = t_;
   failure_.stepSize = h;
   failure_.reason = reason;
-  // The equation that the step could not satisfy: the DAE residual at a forward-Euler
-  // prediction from the last accepted state (at that state itself every residual is zero).
+  notePredictedResidual(system_, t_, h, y_, yp_, failure_);
   const StateLayout& l = system_.layout();
-  const int n = l.size();
-  if (y_.size() != n || yp_.size() != n) return;
-  const Eigen::VectorXd yPredicted = y_ + h * yp_;
-  Eigen::VectorXd g(n);
-  system_.residual(t_ + h, yPredicted.data(), yp_.data(), g.data());
-  for (int i = 0; i < n; ++i) {
-    const double r = std::abs(g(i));
-    if (failure_.worstEquation < 0 || !std::isfinite(r) || r > failure_.worstResidual) {
-      failure_.worstEquation = i;
-      failure_.worstResidual = r;
-      if (!std::isfinite(r)) break;
-    }
-  }
   // The variable with the largest weighted local-error estimate of the last attempt.
   if (!errors || errors->size() != x_.size()) return;
   double worstWeighted = -1.0;

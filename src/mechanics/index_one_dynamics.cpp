@@ -16,14 +16,6 @@
 namespace openmss::mechanics {
 namespace {
 
-std::vector<int> activeEquations(const MultibodySystem& system) {
-  std::vector<int> rows;
-  const auto& eqs = system.constraints().equations();
-  for (int k = 0; k < static_cast<int>(eqs.size()); ++k)
-    if (eqs[static_cast<size_t>(k)].active) rows.push_back(k);
-  return rows;
-}
-
 // A pivot of S at most this fraction of its diagonal entry before elimination means the rows
 // of C are dependent to working precision (a singular configuration): the accelerations are
 // not determined and evaluate() says so instead of returning amplified round-off.
@@ -191,7 +183,7 @@ struct IndexOneDynamics::Engine {
 };
 
 IndexOneDynamics::Engine::Engine(const MultibodySystem& sys)
-    : system(sys), rows(sys, activeEquations(sys)) {
+    : system(sys), rows(sys, activeRows(sys)) {
   nb = sys.layout().bodies;
   m = rows.count();
   baselineAccelerations = readsAccelerationsOrReactions(sys.model());

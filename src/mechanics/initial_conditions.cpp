@@ -32,6 +32,14 @@ Eigen::MatrixXd activeConstraintJacobian(const MultibodySystem& system, const do
   return c;
 }
 
+std::vector<int> activeRows(const MultibodySystem& system) {
+  std::vector<int> rows;
+  const auto& eqs = system.constraints().equations();
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k)
+    if (eqs[k].active) rows.push_back(k);
+  return rows;
+}
+
 namespace {
 
 // Appends the rows of the joints' initial conditions to C (after the active equations).
@@ -47,14 +55,6 @@ void appendInitialConditionRows(const MultibodySystem& system, const double* y,
     system.constraintRow(*extra[r], y, row.data());
     for (int j = 0; j < cols; ++j) c(base + static_cast<Eigen::Index>(r), j) = row[j];
   }
-}
-
-std::vector<int> activeRows(const MultibodySystem& system) {
-  std::vector<int> rows;
-  const auto& eqs = system.constraints().equations();
-  for (int k = 0; k < static_cast<int>(eqs.size()); ++k)
-    if (eqs[k].active) rows.push_back(k);
-  return rows;
 }
 
 // Diagonal matrix of `d`, sparse.

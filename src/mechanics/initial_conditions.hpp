@@ -99,6 +99,9 @@ void solveVelocities(const MultibodySystem& system, double t, Eigen::VectorXd& y
 bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd& y,
                         Eigen::VectorXd& yp, LinearAlgebra method = LinearAlgebra::Automatic);
 
+// The active constraint equations (those not found redundant), in equation order.
+std::vector<int> activeRows(const MultibodySystem& system);
+
 // C over the active equations (rows) and moving bodies (6 columns each).
 Eigen::MatrixXd activeConstraintJacobian(const MultibodySystem& system, const double* y,
                                          std::vector<int>* rows);
