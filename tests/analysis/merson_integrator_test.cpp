@@ -22,54 +22,22 @@
 #include "mechanics/index_one_dynamics.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
+#include "support/integrator_test_models.hpp"
 #include "solvers/bdf_integrator.hpp"
 #include "support/cli_run.hpp"
 
 namespace openmss::analysis {
 namespace {
 
+using test::assemble;
+using test::Mechanism;
+using test::kPendulum;
+using test::kSpringDamper;
+using test::kStiffSpring;
+constexpr double kX1 = test::kPendulumX1;
+constexpr double kY1 = test::kPendulumY1;
+
 using mechanics::StateLayout;
-
-// The test-set pendulum's position at t = 1 (as tests/analysis/sundials_integrators_test.cpp).
-constexpr double kX1 = 0.867348640604551746;
-constexpr double kY1 = 0.497701050476373918;
-
-const char* kPendulum =
-    "DAE test-set pendulum\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=1, CM=20, IP=1e-10,1e-10,1e-10, VX=0, VY=1, VZ=0\n"
-    "MARKER/20, PART=2, QP=1,0,0\n"
-    "MARKER/21, PART=2, QP=0,0,0\n"
-    "JOINT/1, REVOLUTE, I=21, J=10\n"
-    "ACCGRAV/ JGRAV=-1\n"
-    "END\n";
-
-// m = 2 on a translational joint along z, k = 200, c = 4: x(t) = e^{-t} x0 (cos wd t +
-// sin(wd t) / wd), wd^2 = 99.
-const char* kSpringDamper =
-    "mass on a spring-damper\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=2, CM=20, IP=1,1,1, QG=0,0,1.1\n"
-    "MARKER/20, PART=2\n"
-    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
-    "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=200, C=4, LENGTH=1\n"
-    "END\n";
-
-// k/m = 1e8, critically damped: eigenvalues -1e4 (double); the mass rests after ~1e-3 s.
-const char* kStiffSpring =
-    "stiff spring-damper\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=1, CM=20, IP=1,1,1, QG=0,0,1.001\n"
-    "MARKER/20, PART=2\n"
-    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
-    "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=1e8, C=2e4, LENGTH=1\n"
-    "END\n";
 
 // N unit links (1 kg, slender: I = 1/12 about the transverse axes) along x from the origin,
 // gravity 9.81 along -y. Planar: revolute joints about z. Spatial: spherical joints, and the
@@ -95,27 +63,6 @@ std::string chainDataset(int links, bool spatial) {
   return text;
 }
 
-struct Mechanism {
-  model::Model model;
-  std::unique_ptr<mechanics::MultibodySystem> system;
-  Eigen::VectorXd y, yp;
-};
-
-std::unique_ptr<Mechanism> assemble(const std::string& text) {
-  auto m = std::make_unique<Mechanism>();
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "model.adm", ds, d);
-  EXPECT_TRUE(model::buildModel(ds, m->model, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
-  m->system = std::make_unique<mechanics::MultibodySystem>(m->model);
-  m->y = m->system->initialState();
-  mechanics::removeRedundantConstraints(*m->system, m->y);
-  EXPECT_TRUE(mechanics::assemblePositions(*m->system, 0.0, m->y, 1e-12, 25).converged);
-  mechanics::solveVelocities(*m->system, 0.0, m->y);
-  EXPECT_TRUE(mechanics::solveAccelerations(*m->system, 0.0, m->y, m->yp));
-  return m;
-}
 
 MersonSettings settingsFor(double error, double hmax) {
   MersonSettings s;

@@ -15,77 +15,21 @@
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
+#include "support/integrator_test_models.hpp"
 #include "solvers/ida_integrator.hpp"
 
 namespace openmss::analysis {
 namespace {
 
+using test::assemble;
+using test::Mechanism;
+using test::kPendulum;
+using test::kSpringDamper;
+using test::kStiffSpring;
+constexpr double kX1 = test::kPendulumX1;
+constexpr double kY1 = test::kPendulumY1;
+
 using mechanics::StateLayout;
-
-constexpr double kX1 = 0.867348640604551746;
-constexpr double kY1 = 0.497701050476373918;
-
-// As tests/analysis/dae_pendulum_test.cpp: unit point mass (inertia 1e-10) on a unit rod.
-const char* kPendulum =
-    "DAE test-set pendulum\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=1, CM=20, IP=1e-10,1e-10,1e-10, VX=0, VY=1, VZ=0\n"
-    "MARKER/20, PART=2, QP=1,0,0\n"
-    "MARKER/21, PART=2, QP=0,0,0\n"
-    "JOINT/1, REVOLUTE, I=21, J=10\n"
-    "ACCGRAV/ JGRAV=-1\n"
-    "END\n";
-
-// m = 2 on a translational joint along z, spring-damper k = 200, c = 4 (as
-// force_elements_dynamics_test.cpp): x(t) = e^{-t} x0 (cos wd t + sin(wd t) / wd), wd^2 = 99.
-const char* kSpringDamper =
-    "mass on a spring-damper\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=2, CM=20, IP=1,1,1, QG=0,0,1.1\n"
-    "MARKER/20, PART=2\n"
-    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
-    "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=200, C=4, LENGTH=1\n"
-    "END\n";
-
-// The same with k/m = 1e8 and critical damping (c = 2 sqrt(k m)): after a transient of a few
-// 1e-4 s the mass rests; its eigenvalues (-1e4 double) make the model stiff for any explicit-
-// like method over a run of 0.05 s.
-const char* kStiffSpring =
-    "stiff spring-damper\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=1, CM=20, IP=1,1,1, QG=0,0,1.001\n"
-    "MARKER/20, PART=2\n"
-    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
-    "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=1e8, C=2e4, LENGTH=1\n"
-    "END\n";
-
-struct Mechanism {
-  model::Model model;
-  std::unique_ptr<mechanics::MultibodySystem> system;
-  Eigen::VectorXd y, yp;
-};
-
-std::unique_ptr<Mechanism> assemble(const char* text) {
-  auto m = std::make_unique<Mechanism>();
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "model.adm", ds, d);
-  EXPECT_TRUE(model::buildModel(ds, m->model, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
-  m->system = std::make_unique<mechanics::MultibodySystem>(m->model);
-  m->y = m->system->initialState();
-  mechanics::removeRedundantConstraints(*m->system, m->y);
-  EXPECT_TRUE(mechanics::assemblePositions(*m->system, 0.0, m->y, 1e-12, 25).converged);
-  mechanics::solveVelocities(*m->system, 0.0, m->y);
-  EXPECT_TRUE(mechanics::solveAccelerations(*m->system, 0.0, m->y, m->yp));
-  return m;
-}
 
 solvers::BdfSettings settingsFor(double error, double hmax) {
   solvers::BdfSettings s;
