@@ -46,6 +46,9 @@ MUJOCO_LADDER = [1e-2, 1e-3]  # RK4 time step (1e-3: the issue's figure)
 OPENMSS_REFERENCE = {"bushing": ("GSTIFF", 1e-8)}
 OPENMSS_REFERENCE_DEFAULT = ("MERSON", 1e-8)
 SIMBODY_REFERENCE = 1e-10
+# The tight reference runs take several times a measured run (Simbody at 1e-10 on the planar
+# 1000-link chain: 60-100 s on this machine), so they get this multiple of the peer time limit.
+REFERENCE_TIMEOUT_FACTOR = 3
 
 
 def run_process(cmd, cwd, timeout):
@@ -182,7 +185,10 @@ def main():
         r = fn()
         if r["status"] == "timeout":
             timed_out.add(key)
-            timed_out.add((engine, current["model"], n))
+            # A tight reference run that times out says nothing about the looser measured
+            # settings of the same engine: only a measured setting skips the tighter ones.
+            if not label.startswith("ref "):
+                timed_out.add((engine, current["model"], n))
             r["note"] = f"skipped, > {timeout:g} s (timeout)"
         return r
 
@@ -200,9 +206,10 @@ def main():
             if peers and args.simbody:
                 ref_sb = guarded("Simbody", f"ref accuracy={SIMBODY_REFERENCE:g}", n,
                                  lambda: run_peer(args.simbody, "Simbody", kind, n,
-                                                  SIMBODY_REFERENCE, args.peer_timeout,
+                                                  SIMBODY_REFERENCE, REFERENCE_TIMEOUT_FACTOR *
+                                                  args.peer_timeout,
                                                   f"RK-Merson {SIMBODY_REFERENCE:g}"),
-                                 args.peer_timeout, True)
+                                 REFERENCE_TIMEOUT_FACTOR * args.peer_timeout, True)
             # The reference for the accuracy column: Simbody's tight run where it exists (it
             # agrees with MuJoCo at small steps to ~1e-9 m), else OpenMSS's tight run.
             ref = None
