@@ -45,7 +45,11 @@ bool modelFromFile(const fs::path& path, model::Model& m) {
 }
 
 bool modelFromText(const std::string& text, model::Model& m) {
-  const fs::path path = fs::temp_directory_path() / "openmss_sparse_newton_chain.adm";
+  // One file per test: ctest runs this file's tests as parallel processes, and a shared name
+  // let one test read the file while another was rewriting it.
+  const fs::path path = fs::temp_directory_path() /
+                        (std::string("openmss_sparse_newton_") +
+                         ::testing::UnitTest::GetInstance()->current_test_info()->name() + ".adm");
   {
     std::ofstream out(path);
     out << text;
