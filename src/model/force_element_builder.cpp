@@ -5,6 +5,8 @@
 
 #include "model/beam_stiffness.hpp"
 #include "model/model_builder.hpp"
+#include "model/part_builder.hpp"
+#include "model/statement_arguments.hpp"
 
 namespace openmss::model {
 namespace {
@@ -14,48 +16,20 @@ using language::Statement;
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
 
-// Exactly `count` numbers (the reader checked counts against the schema; this guards the
-// model's own requirement).
-std::optional<std::vector<double>> numbers(const Statement& s, const char* name, size_t count,
-                                           Diagnostics& diags) {
-  const Argument* a = s.find(name);
-  if (!a) return std::nullopt;
-  bool ok = a->values.size() == count;
-  for (const auto& v : a->values) ok = ok && v.kind == language::Value::Kind::Number;
-  if (!ok) {
-    diags.error(a->where, s.subject(),
-                std::string(name) + " needs " + std::to_string(count) + " numbers",
-                "Write " + std::string(name) + "=r1,...,r" + std::to_string(count) + ".");
-    return std::nullopt;
-  }
-  std::vector<double> out;
-  for (const auto& v : a->values) out.push_back(v.number);
-  return out;
-}
-
-std::optional<double> number(const Statement& s, const char* name, Diagnostics& diags) {
-  auto v = numbers(s, name, 1, diags);
-  if (!v) return std::nullopt;
-  return (*v)[0];
-}
-
 // A stiffness or damping coefficient: zero when not given, never negative.
-double coefficient(const Statement& s, const char* name, Diagnostics& diags) {
-  const double v = number(s, name, diags).value_or(0.0);
+double coefficient(StatementArguments& a, const char* name) {
+  const double v = a.real(name).value_or(0.0);
   if (v < 0.0)
-    diags.error(s.find(name)->where, s.subject(), std::string(name) + " must not be negative",
-                std::string("Give ") + name + " >= 0.");
+    a.error(*a.find(name), std::string(name) + " must not be negative",
+            std::string("Give ") + name + " >= 0.");
   return v;
 }
 
-Eigen::Vector3d triple(const Statement& s, const char* name, bool nonNegative,
-                       Diagnostics& diags) {
-  auto v = numbers(s, name, 3, diags);
-  if (!v) return Eigen::Vector3d::Zero();
-  const Eigen::Vector3d out((*v)[0], (*v)[1], (*v)[2]);
+Eigen::Vector3d triple(StatementArguments& a, const char* name, bool nonNegative) {
+  const Eigen::Vector3d out = a.vec3(name).value_or(Eigen::Vector3d::Zero());
   if (nonNegative && out.minCoeff() < 0.0)
-    diags.error(s.find(name)->where, s.subject(), std::string(name) + " must not be negative",
-                std::string("Give three values >= 0 for ") + name + ".");
+    a.error(*a.find(name), std::string(name) + " must not be negative",
+            std::string("Give three values >= 0 for ") + name + ".");
   return out;
 }
 
@@ -109,13 +83,13 @@ void rejectUserFunction(const Statement& s, const char* routine, Diagnostics& di
                   "Give the element's data in the statement itself.");
 }
 
-void buildSpringDamper(const Statement& s, Model& model, const MarkerResolver& markerRef,
-                       Diagnostics& diags) {
+void buildSpringDamper(const Statement& s, Model& model, Diagnostics& diags) {
+  StatementArguments a(s, diags);
   SpringDamper sd;
   sd.id = *s.id;
   sd.where = s.where;
-  sd.iMarker = markerRef(s, "I");
-  sd.jMarker = markerRef(s, "J");
+  sd.iMarker = markerReference(model, s, "I", diags);
+  sd.jMarker = markerReference(model, s, "J", diags);
   const bool translational = s.has("TRANSLATIONAL"), rotational = s.has("ROTATIONAL");
   if (translational == rotational) {
     diags.error(s.where, s.subject(), "give exactly one of TRANSLATIONAL and ROTATIONAL",
@@ -129,16 +103,16 @@ void buildSpringDamper(const Statement& s, Model& model, const MarkerResolver& m
   const char* const* own = rotational ? kRotational : kTranslational;
   const char* const* other = rotational ? kTranslational : kRotational;
   for (int k = 0; k < 4; ++k)
-    if (const Argument* a = s.find(other[k]))
-      diags.error(a->where, s.subject(),
+    if (const Argument* arg = s.find(other[k]))
+      diags.error(arg->where, s.subject(),
                   std::string(other[k]) + " belongs to a " +
                       (rotational ? "TRANSLATIONAL" : "ROTATIONAL") + " spring-damper",
                   std::string("Use ") + own[k] + " with " +
                       (rotational ? "ROTATIONAL" : "TRANSLATIONAL") + ".");
-  sd.stiffness = coefficient(s, own[0], diags);
-  sd.damping = coefficient(s, own[1], diags);
-  sd.freeValue = number(s, own[2], diags).value_or(0.0);
-  sd.preload = number(s, own[3], diags).value_or(0.0);
+  sd.stiffness = coefficient(a, own[0]);
+  sd.damping = coefficient(a, own[1]);
+  sd.freeValue = a.real(own[2]).value_or(0.0);
+  sd.preload = a.real(own[3]).value_or(0.0);
   if (sd.iMarker < 0 || sd.jMarker < 0) return;
   rejectSamePart(s, model, sd.iMarker, sd.jMarker, "J", diags);
   const GroundPose pi = dataSetPose(model, sd.iMarker), pj = dataSetPose(model, sd.jMarker);
@@ -160,73 +134,74 @@ void buildSpringDamper(const Statement& s, Model& model, const MarkerResolver& m
   model.springDampers.push_back(sd);
 }
 
-void buildBushing(const Statement& s, Model& model, const MarkerResolver& markerRef,
-                  Diagnostics& diags) {
+void buildBushing(const Statement& s, Model& model, Diagnostics& diags) {
+  StatementArguments a(s, diags);
   LinearField f;
   f.id = *s.id;
   f.kind = LinearField::Kind::Bushing;
   f.where = s.where;
-  f.iMarker = markerRef(s, "I");
-  f.jMarker = markerRef(s, "J");
-  const Eigen::Vector3d k = triple(s, "K", true, diags), c = triple(s, "C", true, diags);
-  const Eigen::Vector3d kt = triple(s, "KT", true, diags), ct = triple(s, "CT", true, diags);
+  f.iMarker = markerReference(model, s, "I", diags);
+  f.jMarker = markerReference(model, s, "J", diags);
+  const Eigen::Vector3d k = triple(a, "K", true), c = triple(a, "C", true);
+  const Eigen::Vector3d kt = triple(a, "KT", true), ct = triple(a, "CT", true);
   Vector6d stiffness, damping;
   stiffness << k, kt;
   damping << c, ct;
   f.stiffness = stiffness.asDiagonal();
   f.damping = damping.asDiagonal();
-  f.preload << triple(s, "FORCE", false, diags), triple(s, "TORQUE", false, diags);
+  f.preload << triple(a, "FORCE", false), triple(a, "TORQUE", false);
   if (f.iMarker < 0 || f.jMarker < 0) return;
   rejectSamePart(s, model, f.iMarker, f.jMarker, "J", diags);
   model.linearFields.push_back(f);
 }
 
 // CMATRIX (n values) or CRATIO times the stiffness: the damping of FIELD and BEAM.
-void dampingOf(const Statement& s, int nValues, LinearField& f, Diagnostics& diags) {
+void dampingOf(StatementArguments& a, int nValues, LinearField& f, Diagnostics& diags) {
+  const Statement& s = a.statement();
   if (s.has("CMATRIX") && s.has("CRATIO")) {
     diags.error(s.find("CRATIO")->where, s.subject(), "give CMATRIX or CRATIO, not both",
                 "Keep CMATRIX (the damping matrix) or CRATIO (damping = CRATIO * stiffness).");
     return;
   }
-  if (auto c = numbers(s, "CMATRIX", static_cast<size_t>(nValues), diags))
+  if (auto c = a.numbers("CMATRIX", static_cast<size_t>(nValues)))
     f.damping = nValues == 36 ? matrixByColumns(*c) : symmetricFromUpperColumns(*c);
   if (s.has("CRATIO")) {
-    const double ratio = coefficient(s, "CRATIO", diags);
+    const double ratio = coefficient(a, "CRATIO");
     f.damping = ratio * f.stiffness;
   }
 }
 
-void buildField(const Statement& s, Model& model, const MarkerResolver& markerRef,
-                Diagnostics& diags) {
+void buildField(const Statement& s, Model& model, Diagnostics& diags) {
+  StatementArguments a(s, diags);
   LinearField f;
   f.id = *s.id;
   f.kind = LinearField::Kind::Field;
   f.where = s.where;
-  f.iMarker = markerRef(s, "I");
-  f.jMarker = markerRef(s, "J");
+  f.iMarker = markerReference(model, s, "I", diags);
+  f.jMarker = markerReference(model, s, "J", diags);
   rejectUserFunction(s, "FIESUB", diags);
-  if (auto k = numbers(s, "KMATRIX", 36, diags)) {
+  if (auto k = a.numbers("KMATRIX", 36)) {
     f.stiffness = matrixByColumns(*k);
   } else if (!s.has("KMATRIX")) {
     diags.error(s.where, s.subject(), "missing required argument KMATRIX",
                 "Add KMATRIX=r1,...,r36 (the 6x6 stiffness by columns).");
   }
-  dampingOf(s, 36, f, diags);
-  if (auto l = numbers(s, "LENGTH", 6, diags)) f.reference = Vector6d(l->data());
-  if (auto p = numbers(s, "FORCE", 6, diags)) f.preload = Vector6d(p->data());
+  dampingOf(a, 36, f, diags);
+  if (auto l = a.numbers("LENGTH", 6)) f.reference = Vector6d(l->data());
+  if (auto p = a.numbers("FORCE", 6)) f.preload = Vector6d(p->data());
   if (f.iMarker < 0 || f.jMarker < 0) return;
   rejectSamePart(s, model, f.iMarker, f.jMarker, "J", diags);
   model.linearFields.push_back(f);
 }
 
-void buildBeam(const Statement& s, Model& model, const MarkerResolver& markerRef,
-               Diagnostics& diags) {
+void buildBeam(const Statement& s, Model& model, Diagnostics& diags) {
+  StatementArguments a(s, diags);
   LinearField f;
   f.id = *s.id;
   f.kind = LinearField::Kind::Beam;
   f.where = s.where;
-  f.iMarker = markerRef(s, "I");
-  f.jMarker = markerRef(s, "J");
+  f.iMarker = markerReference(model, s, "I", diags);
+  f.jMarker = markerReference(model, s, "J", diags);
   if (const Argument* form = s.find("FORMULATION");
       form && !form->values.empty() && form->values[0].text != "LINEAR")
     diags.error(form->where, s.subject(),
@@ -235,7 +210,7 @@ void buildBeam(const Statement& s, Model& model, const MarkerResolver& markerRef
   BeamSection b;
   bool ok = true;
   auto positive = [&](const char* name, double& out) {
-    auto v = number(s, name, diags);
+    auto v = a.real(name);
     if (!v) {
       if (!s.has(name))
         diags.error(s.where, s.subject(), std::string("missing required argument ") + name,
@@ -255,12 +230,12 @@ void buildBeam(const Statement& s, Model& model, const MarkerResolver& markerRef
   positive("IZZ", b.izz);
   positive("EMODULUS", b.emodulus);
   positive("GMODULUS", b.gmodulus);
-  b.asy = coefficient(s, "ASY", diags);
-  b.asz = coefficient(s, "ASZ", diags);
+  b.asy = coefficient(a, "ASY");
+  b.asz = coefficient(a, "ASZ");
   if (!ok) return;
   f.stiffness = beamStiffness(b);
   f.reference(0) = b.length;
-  dampingOf(s, 21, f, diags);
+  dampingOf(a, 21, f, diags);
   if (f.iMarker < 0 || f.jMarker < 0) return;
   rejectSamePart(s, model, f.iMarker, f.jMarker, "J", diags);
   // The undeformed beam runs from J along x_J to I at LENGTH with I's axes those of J. Say so
@@ -277,8 +252,7 @@ void buildBeam(const Statement& s, Model& model, const MarkerResolver& markerRef
   model.linearFields.push_back(f);
 }
 
-void buildVectorForce(const Statement& s, Model& model, const MarkerResolver& markerRef,
-                      Diagnostics& diags) {
+void buildVectorForce(const Statement& s, Model& model, Diagnostics& diags) {
   VectorForce v;
   v.id = *s.id;
   v.where = s.where;
@@ -288,9 +262,9 @@ void buildVectorForce(const Statement& s, Model& model, const MarkerResolver& ma
   rejectUserFunction(s, s.name == "VFORCE" ? "VARSUB/VFOSUB"
                         : s.name == "VTORQUE" ? "VTOSUB" : "GFOSUB",
                      diags);
-  v.iMarker = markerRef(s, "I");
+  v.iMarker = markerReference(model, s, "I", diags);
   if (s.has("RM")) {
-    v.rmMarker = markerRef(s, "RM");
+    v.rmMarker = markerReference(model, s, "RM", diags);
   } else {
     diags.error(s.where, s.subject(), "missing required argument RM",
                 "Add RM=<marker id>: the axes that resolve the components.");
@@ -334,14 +308,19 @@ bool isForceElementStatement(const std::string& name) {
 }
 
 void buildForceElements(const std::vector<const Statement*>& statements, Model& model,
-                        const MarkerResolver& markerRef, Diagnostics& diags) {
+                        Diagnostics& diags) {
   for (const Statement* s : statements) {
     if (!s->id) continue;
-    if (s->name == "SPRINGDAMPER") buildSpringDamper(*s, model, markerRef, diags);
-    else if (s->name == "BUSHING") buildBushing(*s, model, markerRef, diags);
-    else if (s->name == "FIELD") buildField(*s, model, markerRef, diags);
-    else if (s->name == "BEAM") buildBeam(*s, model, markerRef, diags);
-    else buildVectorForce(*s, model, markerRef, diags);
+    if (s->name == "SPRINGDAMPER")
+      buildSpringDamper(*s, model, diags);
+    else if (s->name == "BUSHING")
+      buildBushing(*s, model, diags);
+    else if (s->name == "FIELD")
+      buildField(*s, model, diags);
+    else if (s->name == "BEAM")
+      buildBeam(*s, model, diags);
+    else
+      buildVectorForce(*s, model, diags);
   }
 }
 

@@ -3,7 +3,6 @@
 // VFORCE, VTORQUE, GFORCE, with the data-set checks of each (required arguments, signs,
 // marker conventions) and the lookup of their read-back functions (SPDP, BUSH, ...).
 
-#include <functional>
 #include <string>
 #include <vector>
 
@@ -15,14 +14,10 @@ namespace openmss::model {
 
 bool isForceElementStatement(const std::string& name);
 
-// Resolves a marker argument (I=, J=, RM=, ...) of a statement to a marker index, -1 (with a
-// diagnostic) when missing or unknown.
-using MarkerResolver = std::function<int(const language::Statement&, const char*)>;
-
 // Builds the elements' structures (everything but expression binding, which needs every force
 // element to exist first: bindForceElementFunctions).
 void buildForceElements(const std::vector<const language::Statement*>& statements, Model& model,
-                        const MarkerResolver& markerRef, Diagnostics& diags);
+                        Diagnostics& diags);
 // Binds the FX= ... TZ= expressions of VFORCE, VTORQUE and GFORCE.
 void bindForceElementFunctions(const std::vector<const language::Statement*>& statements,
                                Model& model, Diagnostics& diags);
