@@ -2,76 +2,31 @@
 
 #include <string>
 
+#include "model/statement_arguments.hpp"
+
 namespace openmss::model {
 namespace {
 
-// Reads one positive number (reals) or positive integer; reports what is wrong otherwise.
-class ArgumentReader {
- public:
-  ArgumentReader(const language::Statement& s, Diagnostics& diags) : s_(s), diags_(diags) {}
-
-  void positive(const language::Argument& a, double& out) {
-    if (a.values.empty() || a.values[0].kind != language::Value::Kind::Number ||
-        !(a.values[0].number > 0.0)) {
-      fail(a, a.name + " must be a positive number", "Write " + a.name + "=<value > 0>.");
-      return;
-    }
-    out = a.values[0].number;
+// PATTERN=c1:...:c10 (T or F each). The values given repeat until MAXIT (docs/language.md,
+// "EQUILIBRIUM and IC"): T:F means every other iteration.
+void readPattern(StatementArguments& r, const language::Argument& a, JacobianPattern& out) {
+  if (a.values.empty() || a.values.size() > 10) {
+    r.error(a, a.name + " takes 1 to 10 of T and F", "Write " + a.name + "=T:F:F:F, for example.");
+    return;
   }
-  void count(const language::Argument& a, int& out) {
-    if (a.values.empty() || a.values[0].kind != language::Value::Kind::Number ||
-        a.values[0].number < 1.0 || a.values[0].number > 1e6) {
-      fail(a, a.name + " must be a positive whole number", "Write " + a.name + "=<count >= 1>.");
-      return;
-    }
-    out = static_cast<int>(a.values[0].number);
+  std::array<bool, 10> flags{};
+  for (size_t k = 0; k < 10; ++k) {
+    const std::string& w = a.values[k % a.values.size()].text;
+    flags[k] = w == "T" || w == "TRUE";
   }
-  void pattern(const language::Argument& a, JacobianPattern& out) {
-    if (a.values.empty() || a.values.size() > 10) {
-      fail(a, a.name + " takes 1 to 10 of T and F", "Write " + a.name + "=T:F:F:F, for example.");
-      return;
-    }
-    // The values given repeat until MAXIT (digest §1.7): T:F means every other iteration.
-    std::array<bool, 10> flags{};
-    for (size_t k = 0; k < 10; ++k) {
-      const std::string& w = a.values[k % a.values.size()].text;
-      flags[k] = w == "T" || w == "TRUE";
-    }
-    out.evaluate = flags;
-  }
-  // A number in [low, high]; `what` says the range in words for the message.
-  void within(const language::Argument& a, double low, double high, const std::string& what,
-              double& out) {
-    if (a.values.empty() || a.values[0].kind != language::Value::Kind::Number ||
-        !(a.values[0].number >= low && a.values[0].number <= high)) {
-      fail(a, a.name + " must be " + what, "Write " + a.name + "=<value " + what + ">.");
-      return;
-    }
-    out = a.values[0].number;
-  }
-  void error(const language::Argument& a, const std::string& message, const std::string& hint) {
-    fail(a, message, hint);
-  }
-  void unsupported(const language::Argument& a, const std::string& hint) {
-    fail(a, a.name + " is not supported yet", hint);
-  }
-  bool ok() const { return ok_; }
-
- private:
-  void fail(const language::Argument& a, const std::string& message, const std::string& hint) {
-    diags_.error(a.where, s_.subject(), message, hint);
-    ok_ = false;
-  }
-  const language::Statement& s_;
-  Diagnostics& diags_;
-  bool ok_ = true;
-};
+  out.evaluate = flags;
+}
 
 }  // namespace
 
 bool applyEquilibriumArguments(const language::Statement& s, EquilibriumSettings& settings,
                                Diagnostics& diags) {
-  ArgumentReader r(s, diags);
+  StatementArguments r(s, diags);
   if (s.has("DEFAULT")) settings = {};
   for (const language::Argument& a : s.args) {
     if (a.name == "DEFAULT" || a.name == "LIST" || a.name == "STATIC") continue;
@@ -84,7 +39,7 @@ bool applyEquilibriumArguments(const language::Statement& s, EquilibriumSettings
     else if (a.name == "MAXIT")
       r.count(a, settings.maxit);
     else if (a.name == "PATTERN")
-      r.pattern(a, settings.pattern);
+      readPattern(r, a, settings.pattern);
     else if (a.name == "STABILITY")
       r.positive(a, settings.stability);
     else if (a.name == "TLIMIT")
@@ -101,7 +56,7 @@ bool applyEquilibriumArguments(const language::Statement& s, EquilibriumSettings
 
 bool applyInitialConditionArguments(const language::Statement& s,
                                     InitialConditionSettings& settings, Diagnostics& diags) {
-  ArgumentReader r(s, diags);
+  StatementArguments r(s, diags);
   if (s.has("DEFAULT")) settings = {};
   for (const language::Argument& a : s.args) {
     if (a.name == "DEFAULT" || a.name == "LIST") continue;
@@ -112,13 +67,13 @@ bool applyInitialConditionArguments(const language::Statement& s,
     else if (a.name == "AMAXIT")
       r.count(a, settings.accelerationMaxit);
     else if (a.name == "APATTERN")
-      r.pattern(a, settings.accelerationPattern);
+      readPattern(r, a, settings.accelerationPattern);
     else if (a.name == "ERROR")
       r.positive(a, settings.error);
     else if (a.name == "MAXIT")
       r.count(a, settings.maxit);
     else if (a.name == "PATTERN")
-      r.pattern(a, settings.pattern);
+      readPattern(r, a, settings.pattern);
     else if (a.name == "TLIMIT")
       r.positive(a, settings.translationLimit);
     else if (a.name == "VERROR")
@@ -156,7 +111,7 @@ const char* formulationName(IntegratorFormulation f) {
 
 bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& settings,
                               Diagnostics& diags, const char* method) {
-  ArgumentReader r(s, diags);
+  StatementArguments r(s, diags);
   if (s.has("DEFAULT")) settings = {};
   using T = IntegratorType;
   using F = IntegratorFormulation;
@@ -204,7 +159,7 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
     } else if (a.name == "MAXIT") {
       r.count(a, settings.maxit);
     } else if (a.name == "PATTERN") {
-      r.pattern(a, settings.pattern.emplace());
+      readPattern(r, a, settings.pattern.emplace());
     } else if (a.name == "INTERPOLATE") {
       settings.interpolate = !a.values.empty() && a.values[0].text == "ON";
     } else if (a.name == "ALPHA") {

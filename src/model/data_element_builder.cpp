@@ -5,38 +5,13 @@
 #include <utility>
 #include <vector>
 
+#include "model/statement_arguments.hpp"
+
 namespace openmss::model {
 namespace {
 
 using language::Argument;
 using language::Statement;
-
-// The numbers of an argument, or nullopt (with a diagnostic) when one of them is a word.
-std::optional<std::vector<double>> numbers(const Statement& s, const Argument& a,
-                                           Diagnostics& diags) {
-  std::vector<double> out;
-  for (const auto& v : a.values) {
-    if (v.kind != language::Value::Kind::Number) {
-      diags.error(v.where.line > 0 ? v.where : a.where, s.subject(),
-                  a.name + " needs numbers, found '" + v.text + "'", "Write numeric constants.");
-      return std::nullopt;
-    }
-    out.push_back(v.number);
-  }
-  return out;
-}
-
-std::optional<long> positiveInteger(const Statement& s, const char* name, Diagnostics& diags) {
-  const Argument* a = s.find(name);
-  if (a == nullptr) return std::nullopt;
-  if (a->values.size() != 1 || a->values[0].kind != language::Value::Kind::Number ||
-      a->values[0].number != std::floor(a->values[0].number) || a->values[0].number <= 0) {
-    diags.error(a->where, s.subject(), std::string(name) + " needs one positive integer",
-                std::string("Write ") + name + "=<integer>.");
-    return std::nullopt;
-  }
-  return static_cast<long>(a->values[0].number);
-}
 
 // Index of the first value that is not above its predecessor, or -1.
 int firstNotIncreasing(const std::vector<double>& v) {
@@ -63,7 +38,7 @@ void buildSpline(const Statement& s, Model& model, Diagnostics& diags) {
                 "Write SPLINE/id, X=x1,...,xn, Y=y1,...,yn (n >= 4).");
     return;
   }
-  const auto x = numbers(s, *xArg, diags);
+  const auto x = StatementArguments(s, diags).numbers(*xArg);
   if (!x) return;
   bool ok = true;
   if (x->size() < 4) {
@@ -83,7 +58,7 @@ void buildSpline(const Statement& s, Model& model, Diagnostics& diags) {
   std::vector<double> z;
   std::vector<std::vector<double>> curves;
   for (const Argument* yArg : yArgs) {
-    auto y = numbers(s, *yArg, diags);
+    auto y = StatementArguments(s, diags).numbers(*yArg);
     if (!y) {
       ok = false;
       continue;
@@ -127,8 +102,8 @@ void buildMatrix(const Statement& s, Model& model, Diagnostics& diags) {
                 "List the entries with FULL=RORDER, ROWS=, COLUMNS=, VALUES=.");
     return;
   }
-  const auto rows = positiveInteger(s, "ROWS", diags);
-  const auto columns = positiveInteger(s, "COLUMNS", diags);
+  const auto rows = StatementArguments(s, diags).integer("ROWS");
+  const auto columns = StatementArguments(s, diags).integer("COLUMNS");
   const Argument* valuesArg = s.find("VALUES");
   const Argument* full = s.find("FULL");
   const bool sparse = s.has("SPARSE");
@@ -139,7 +114,7 @@ void buildMatrix(const Statement& s, Model& model, Diagnostics& diags) {
                 "MATRIX/id, SPARSE, ROWS=m, COLUMNS=n, I=..., J=..., VALUES=....");
     return;
   }
-  const auto values = numbers(s, *valuesArg, diags);
+  const auto values = StatementArguments(s, diags).numbers(*valuesArg);
   if (!values) return;
   Eigen::MatrixXd m = Eigen::MatrixXd::Zero(*rows, *columns);
   if (full != nullptr) {
@@ -194,7 +169,7 @@ void buildCurve(const Statement& s, Model& model, Diagnostics& diags) {
                 "Define the curve with MATRIX=id (points or B-spline control points).");
     return;
   }
-  const auto matrixId = positiveInteger(s, "MATRIX", diags);
+  const auto matrixId = StatementArguments(s, diags).integer("MATRIX");
   if (!matrixId) {
     if (!s.has("MATRIX")) {
       diags.error(s.where, s.subject(), "a CURVE needs MATRIX=id",
@@ -227,7 +202,7 @@ void buildCurve(const Statement& s, Model& model, Diagnostics& diags) {
   }
   long order = 4;
   if (s.has("ORDER")) {
-    const auto o = positiveInteger(s, "ORDER", diags);
+    const auto o = StatementArguments(s, diags).integer("ORDER");
     if (!o) return;
     order = *o;
   }

@@ -3,6 +3,7 @@
 #include <set>
 
 #include "model/model_builder.hpp"
+#include "model/statement_arguments.hpp"
 
 namespace openmss::model {
 
@@ -10,13 +11,6 @@ using language::Argument;
 using language::Statement;
 
 namespace {
-
-std::optional<double> numberOf(const Statement& s, const char* name) {
-  const Argument* a = s.find(name);
-  if (!a || a->values.empty() || a->values[0].kind != language::Value::Kind::Number)
-    return std::nullopt;
-  return a->values[0].number;
-}
 
 bool isUserSubroutine(const Argument& a) { return a.expression.rfind("USER", 0) == 0; }
 
@@ -27,6 +21,7 @@ void buildSensors(const language::Dataset& dataset, Model& model, Diagnostics& d
   for (const Statement& s : dataset.statements) {
     if (s.name != "SENSOR" || !s.id) continue;
     if (!seen.insert(*s.id).second) continue;  // duplicate ids: reported by the reader
+    const StatementArguments args(s, diags);
     Sensor sensor;
     sensor.id = *s.id;
     sensor.where = s.where;
@@ -36,7 +31,8 @@ void buildSensors(const language::Dataset& dataset, Model& model, Diagnostics& d
       ok = false;
     };
 
-    if (auto v = numberOf(s, "VALUE")) sensor.value = *v;
+    if (auto v = args.firstNumber("VALUE"))
+      sensor.value = *v;
     else
       fail(s.where, "VALUE is missing",
            "Give VALUE=<number>: the sensor compares its FUNCTION with it.");
@@ -53,17 +49,17 @@ void buildSensors(const language::Dataset& dataset, Model& model, Diagnostics& d
       fail(s.where, "EQ, GE and LE exclude each other", "Keep one of them (EQ is the default).");
 
     if (const Argument* e = s.find("ERROR")) {
-      const auto v = numberOf(s, "ERROR");
+      const auto v = args.firstNumber("ERROR");
       if (!v || *v <= 0) fail(e->where, "ERROR must be positive", "Give ERROR=<tolerance> > 0.");
       else sensor.error = *v;
     }
     if (const Argument* a = s.find("DT")) {
-      const auto v = numberOf(s, "DT");
+      const auto v = args.firstNumber("DT");
       if (!v || *v <= 0) fail(a->where, "DT (the new output interval) must be positive", "");
       else sensor.outputInterval = *v;
     }
     if (const Argument* a = s.find("STEPSIZE")) {
-      const auto v = numberOf(s, "STEPSIZE");
+      const auto v = args.firstNumber("STEPSIZE");
       if (!v || *v <= 0) fail(a->where, "STEPSIZE (the next step size) must be positive", "");
       else sensor.stepSize = *v;
     }

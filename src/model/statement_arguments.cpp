@@ -138,6 +138,19 @@ bool StatementArguments::within(const language::Argument& a, double low, double 
   return true;
 }
 
+std::optional<std::vector<double>> StatementArguments::numbers(const language::Argument& a) {
+  std::vector<double> out;
+  for (const auto& v : a.values) {
+    if (v.kind != language::Value::Kind::Number) {
+      error(v.where.line > 0 ? v.where : a.where, a.name + " needs numbers, found '" + v.text + "'",
+            "Write numeric constants.");
+      return std::nullopt;
+    }
+    out.push_back(v.number);
+  }
+  return out;
+}
+
 void StatementArguments::unsupported(const language::Argument& a, const std::string& hint) {
   error(a, a.name + " is not supported yet", hint);
 }

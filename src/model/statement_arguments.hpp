@@ -63,6 +63,9 @@ class StatementArguments {
   // A number in [low, high]; `what` says the range in words for the message.
   bool within(const language::Argument& a, double low, double high, const std::string& what,
               double& out);
+  // Every value a number, any count (SPLINE X=, MATRIX VALUES=, ...); the first word found is
+  // reported at its own location ("NAME needs numbers, found 'W'").
+  std::optional<std::vector<double>> numbers(const language::Argument& a);
   // "NAME is not supported yet", with what to do instead.
   void unsupported(const language::Argument& a, const std::string& hint);
 
