@@ -14,8 +14,7 @@ namespace openmss::model {
 // Model::sforces without their functions. Needs every marker.
 void buildSForces(const std::vector<const language::Statement*>& statements, Model& model,
                   Diagnostics& diags);
-// Binds FUNCTION= of every SFORCE built: after every force element exists, since a function
-// may read another element's force.
+// Binds FUNCTION= of every SFORCE built, once every element a function may read exists.
 void bindSForceFunctions(const std::vector<const language::Statement*>& statements, Model& model,
                          Diagnostics& diags);
 
