@@ -2,8 +2,8 @@
 // CURVE/id, MATRIX=id: a B-spline space curve evaluated by the CURVE(alpha, iord, comp, id)
 // function (docs/theory.md, "Interpolation of SPLINE and CURVE data").
 //
-// The digest fixes the parameter range (-1..1), the order (ORDER, default 4), that the matrix
-// rows are control points or (CURVE_POINTS) points on the curve, and that a CLOSED curve is
+// ADAMS's CURVE statement fixes the parameter range (-1..1), the order (ORDER, default 4), that the
+// matrix rows are control points or (CURVE_POINTS) points on the curve, and that a CLOSED curve is
 // continuous in its first and second derivatives across the closure. What it leaves open is
 // fixed here and documented: uniform knots, and for CURVE_POINTS uniform parameter values with
 // knots at averages of them (de Boor), so a cubic in alpha sampled at uniform alpha is

@@ -16,7 +16,7 @@ Eigen::Vector3d euler313FromMatrix(const Eigen::Matrix3d& a);
 // t2 in [-pi/2, pi/2]; proper Euler sequences (a == c) give t2 in [0, pi]. At the singular
 // middle angle t1 takes the whole rotation and t3 = 0.
 Eigen::Vector3d bodyFixedAngles(const Eigen::Matrix3d& a, int first, int second, int third);
-// ORIENT system codes 1..10 (digest 2.3) as axis sequences; false for other codes.
+// ORIENT system codes 1..10 (docs/expressions.md, "ORIENT codes") as axis sequences; else false.
 bool orientSequence(int code, int* first, int* second, int* third);
 // ORIENT codes 1..24 as the body-fixed sequence whose angle answers ORIENT(code, component):
 // codes 1..12 are the body-fixed sequences 1-2-3, 2-3-1, 3-1-2, 1-3-2, 2-1-3, 3-2-1, 1-2-1,

@@ -1,9 +1,9 @@
 #pragma once
 // The ADAMS general-purpose functions (STEP, STEP5, HAVSIN, SHF, POLY, CHEBY, FORCOS, FORSIN,
-// SWEEP, IMPACT, BISTOP) as defined in the language digest, section 3.4, written once for every
-// number type of jet.hpp.
+// SWEEP, IMPACT, BISTOP) as defined in docs/expressions.md ("Functions evaluated here"), once for
+// every number type of jet.hpp.
 //
-// Branch points follow the digest's inequalities literally: STEP is h0 for x <= x0 and h1 for
+// Branch points follow ADAMS's inequalities literally: STEP is h0 for x <= x0 and h1 for
 // x >= x1; IMPACT is zero for x >= x1; BISTOP is zero for x1 <= x <= x2. The derivative at a
 // branch point is the one of the piece that supplies the value there.
 

@@ -39,13 +39,14 @@ NameInfo vectorHost(std::string_view name, int maxArgs, std::string_view usage) 
 
 std::vector<NameInfo> buildCatalog() {
   std::vector<NameInfo> c;
-  // Constants and TIME (digest 3.2).
+  // Constants and TIME (docs/expressions.md, "Constants and TIME").
   c.push_back(constantName("PI", std::numbers::pi));
   c.push_back(constantName("DTOR", kDegreesToRadians));
   c.push_back(constantName("RTOD", kRadiansToDegrees));
   c.push_back({"TIME", NameKind::Time, 0, 0, Builtin::Abs, 0.0, "TIME"});
 
-  // FORTRAN intrinsics (digest 3.3). MAX and MIN accept two or more arguments as in FORTRAN.
+  // FORTRAN intrinsics (docs/expressions.md, "Functions evaluated here"). MAX and MIN accept two or
+  // more arguments as in FORTRAN.
   c.push_back(builtin("ABS", Builtin::Abs, 1, 1, "ABS(a)"));
   c.push_back(builtin("SQRT", Builtin::Sqrt, 1, 1, "SQRT(a)"));
   c.push_back(builtin("EXP", Builtin::Exp, 1, 1, "EXP(a)"));
@@ -69,7 +70,8 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(builtin("AINT", Builtin::Aint, 1, 1, "AINT(a)"));
   c.push_back(builtin("ANINT", Builtin::Anint, 1, 1, "ANINT(a)"));
 
-  // General-purpose functions (digest 3.4). Series take up to 31 coefficients (order 30).
+  // General-purpose functions (docs/expressions.md, "Functions evaluated here"). Series take up to
+  // 31 coefficients (order 30).
   c.push_back(builtin("STEP", Builtin::Step, 5, 5, "STEP(x, x0, h0, x1, h1)"));
   c.push_back(builtin("STEP5", Builtin::Step5, 5, 5, "STEP5(x, x0, h0, x1, h1)"));
   c.push_back(builtin("HAVSIN", Builtin::Havsin, 5, 5, "HAVSIN(x, x0, h0, x1, h1)"));
@@ -83,7 +85,8 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(builtin("BISTOP", Builtin::Bistop, 8, 8, "BISTOP(x, xdot, x1, x2, k, e, cmax, d)"));
   c.push_back({"IF", NameKind::Conditional, 4, 4, Builtin::Abs, 0.0, "IF(e1 : e2, e3, e4)"});
 
-  // Marker measures (digest 3.6): i [, j] [, k] [, l] with 0 as the placeholder.
+  // Marker measures (docs/expressions.md, "Host calls"): i [, j] [, k] [, l] with 0 as the
+  // placeholder.
   for (std::string_view n : {"DX", "DY", "DZ"}) c.push_back(host(n, 1, 3, "(i[, j][, k])"));
   c.push_back(host("DM", 1, 2, "DM(i[, j])"));
   for (std::string_view n : {"VX", "VY", "VZ"}) c.push_back(host(n, 1, 4, "(i[, j][, k][, l])"));
@@ -105,7 +108,7 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(host("ORIENT", 3, 4, "ORIENT(sys, comp, i[, j])"));
   c.push_back(host("INCANG", 3, 3, "INCANG(i, j, k)"));
 
-  // Force measures (digest 3.7).
+  // Force measures (docs/expressions.md, "Host calls").
   for (std::string_view n : {"FX", "FY", "FZ", "FM", "TX", "TY", "TZ", "TM"}) {
     c.push_back(host(n, 1, 3, "(i[, j][, k])"));
   }
@@ -118,7 +121,7 @@ std::vector<NameInfo> buildCatalog() {
   }
   c.push_back(host("NFORCE", 4, 4, "NFORCE(id, marker, comp, rm)"));
 
-  // System-element access (digest 3.8).
+  // System-element access (docs/expressions.md, "Host calls").
   c.push_back(host("VARVAL", 1, 1, "VARVAL(id)"));
   c.push_back(host("DIF", 1, 1, "DIF(id)"));
   c.push_back(host("DIF1", 1, 1, "DIF1(id)"));
@@ -127,13 +130,13 @@ std::vector<NameInfo> buildCatalog() {
   c.push_back(host("POUVAL", 2, 2, "POUVAL(id, n)"));
   c.push_back(host("SENVAL", 1, 1, "SENVAL(id)"));
 
-  // Analysis variables (digest 3.2).
+  // Analysis variables (docs/expressions.md, "Analysis variables").
   for (std::string_view n : {"MODE", "HSIZE", "ORDER", "NJAC", "NRHS", "CPU"}) {
     c.push_back(hostVariable(n));
   }
 
-  // Interpolation of SPLINE and CURVE data (digest 3.5): real arguments are expressions, the
-  // id and the flags integer constants.
+  // Interpolation of SPLINE and CURVE data (docs/expressions.md, "Interpolation of model data"):
+  // real arguments are expressions, the id and the flags integer constants.
   c.push_back(dataFunction("AKISPL", 3, 4, "AKISPL(x, z, id[, iord])"));
   c.push_back(dataFunction("CUBSPL", 3, 4, "CUBSPL(x, z, id[, iord])"));
   c.push_back(dataFunction("CURVE", 4, 4, "CURVE(alpha, iord, comp, id)"));
@@ -147,10 +150,11 @@ std::vector<NameInfo> buildCatalog() {
   // (docs/expressions.md, "DELAY").
   c.push_back({"DELAY", NameKind::Delay, 3, 4, Builtin::Abs, 0.0,
                "DELAY(e_delayed, e_delay, e_history[, 0])"});
-  // Modal data or a definition that was not found (digest 3.4, 3.5).
+  // Modal data or a definition that was not found (docs/expressions.md, "Recognised but not
+  // supported yet").
   for (std::string_view n : {"AO", "FXFREQ", "FXMODE"}) c.push_back(unsupported(n));
 
-  // Vectors (digest 3.1, 3.9): component triples of the host measures, MAG and UV.
+  // Vectors (docs/expressions.md, "Vectors"): component triples of the host measures, MAG and UV.
   c.push_back(vectorHost("DXYZ", 3, "DXYZ(i[, j][, k])"));
   c.push_back(vectorHost("VXYZ", 4, "VXYZ(i[, j][, k][, l])"));
   c.push_back(vectorHost("WXYZ", 3, "WXYZ(i[, j][, k])"));

@@ -1,7 +1,7 @@
-// The command table (.acf files and the interactive prompt): the commands of the digest §4.1
-// and of the seed §6.6. A command that shares its name with a statement redefines or lists
-// that statement's data, so it takes the statement's arguments plus LIST; none of them is
-// mandatory in a command because a command changes only what it names.
+// The command table (.acf files and the interactive prompt): the commands of the ADAMS/Solver
+// Reference Manual (docs/language.md, "Commands"). A command that shares its name with a statement
+// redefines or lists that statement's data, so it takes the statement's arguments plus LIST; none
+// of them is mandatory in a command because a command changes only what it names.
 
 #include <algorithm>
 #include <string>
@@ -47,7 +47,7 @@ StatementSpec integratorMethod(std::string name) {
                     word("INTERPOLATE", {"ON", "OFF"}), flag("DEFAULT"), flag("LIST")});
 }
 
-// What each command does, in one line for HELP (seed §6.6, digest §4). Statement commands
+// What each command does, in one line for HELP (docs/language.md, "Commands"). Statement commands
 // are described by kStatementCommands instead.
 const std::vector<std::pair<std::string, std::string>> kCommandSummaries = {
     {"GSTIFF", "sets the error tolerance and steps of the GSTIFF integrator"},
@@ -142,7 +142,7 @@ std::vector<StatementSpec> buildCommandTable(const std::vector<StatementSpec>& s
   t.push_back(statement("SHOW", N, {flag("CPU"), flag("GRAPHICS"), flag("STATUS"), flag("TIME")}));
   t.push_back(statement("TIME", N, {}));
 
-  // Interactive graphics (seed §6.6.10).
+  // Interactive graphics (the ADAMS/Solver Overview, "Information" and graphics commands).
   for (const char* name :
        {"AINIT", "AUTOSCALE", "BACKUP", "ZOOM", "CENTER", "DRAW", "SET", "RETURN"})
     t.push_back(statement(name, N, {}));

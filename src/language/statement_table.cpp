@@ -1,6 +1,6 @@
-// The data-set statement table. Argument lists follow the language digest
-// (adams-language.md §1) and the spellings found in real exported data sets; where the digest
-// is silent the list is a reasonable, documented choice (docs/language.md, "Schema").
+// The data-set statement table. Argument lists follow the statement pages of the ADAMS/Solver
+// Reference Manual and the spellings found in real exported data sets; where the manual is
+// silent the list is a reasonable, documented choice (docs/language.md, "Schema").
 // Minimum abbreviations are left at 0 (automatic: the shortest unique prefix among the
 // statement's arguments) unless a real spelling needs a shorter one.
 
@@ -150,7 +150,7 @@ std::vector<StatementSpec> buildStatementTable() {
     t.push_back(statement("POINT_MASS", R, a));
   }
   {
-    // Not in the digest: modal flexible bodies as exported by ADAMS/View.
+    // Not in the Reference Manual: modal flexible bodies as exported by ADAMS/View.
     std::vector<ArgumentSpec> a = {integers("MATRICES"),    word("INVARIANTS", kTrueFalse, 1, 9),
                                    expression("CRATIO"),    word("MNF_FILE"),
                                    word("DB_FILE"),         integer("INDEX"),

@@ -1,6 +1,6 @@
 #pragma once
-// Solution-control parameters of the EQUILIBRIUM and IC statements and commands (digest §1.7,
-// §7.3). The statement sets them in the Model; the command of the same name changes them
+// Solution-control parameters of the EQUILIBRIUM and IC statements and commands (docs/language.md,
+// "Solution-control statements"). The statement sets them in the Model; the command changes them
 // between analyses. Defaults are ADAMS/Solver (C++)'s.
 
 #include <array>
@@ -41,7 +41,7 @@ struct InitialConditionSettings {
   double velocityError = 1e-4;                          // VERROR
 };
 
-// INTEGRATOR statement and command (digest §7.1; seed Tables 4 and 5). Unset optionals take
+// INTEGRATOR statement and command (docs/integrators.md, "Defaults"). Unset optionals take
 // the chosen integrator's ADAMS default when the run starts (analysis/integrator_factory.cpp,
 // docs/integrators.md): several depend on the output step.
 // Merson: OpenMSS's explicit Kutta-Merson on the index-1 equations (not an ADAMS method).

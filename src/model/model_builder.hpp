@@ -1,6 +1,7 @@
 #pragma once
-// Dataset -> Model: resolves references, checks the model as a whole (seed section 6.4.2) and
-// reports every problem in one pass with file:line, statement and id, and what to change.
+// Dataset -> Model: resolves references, checks the model as a whole and reports every problem
+// in one pass with file:line, statement and id, and what to change. The passes, their order and
+// the builder of each element family: docs/language.md, "From data set to model".
 
 #include "common/diagnostics.hpp"
 #include "language/dataset.hpp"

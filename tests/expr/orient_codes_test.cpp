@@ -31,7 +31,7 @@ double orient(const Eigen::Matrix3d& r, int code, int component) {
   return out;
 }
 
-// Axis sequences of codes 1-12 (digest 2.3, extended with 3-1-3 and 3-2-3).
+// Axis sequences of codes 1-12 (docs/expressions.md, "ORIENT codes").
 const int kSequences[12][3] = {{0, 1, 2}, {1, 2, 0}, {2, 0, 1}, {0, 2, 1}, {1, 0, 2}, {2, 1, 0},
                                {0, 1, 0}, {0, 2, 0}, {1, 0, 1}, {1, 2, 1}, {2, 0, 2}, {2, 1, 2}};
 
@@ -73,7 +73,8 @@ TEST(OrientCodes, Code25IsAxAyAzAndCode26IsYawPitchRoll) {
   EXPECT_NEAR(orient(elementary(1, -2.5), 25, 2), -2.5, 1e-14);
   EXPECT_NEAR(orient(elementary(2, 3.0), 25, 3), 3.0, 1e-14);
   EXPECT_NEAR(orient(elementary(2, 3.0), 25, 1), 0.0, 1e-14);
-  // YAW, PITCH, ROLL: body 3-2-1 angles with the second negated (digest 2.3).
+  // YAW, PITCH, ROLL: body 3-2-1 angles with the second negated (docs/expressions.md, "ORIENT
+  // codes").
   const Eigen::Matrix3d r = elementary(2, 0.7) * elementary(1, 0.4) * elementary(0, -1.3);
   EXPECT_NEAR(orient(r, 26, 1), 0.7, 1e-12);
   EXPECT_NEAR(orient(r, 26, 2), -0.4, 1e-12);

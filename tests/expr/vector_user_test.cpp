@@ -58,7 +58,7 @@ TEST(Vectors, CrossProductIsRightHanded) {
 }
 
 TEST(Vectors, MagAndUnitVectorGiveTheSeparationVelocity) {
-  // UV(DXYZ(i,j)) * VXYZ(i,j) is VR(i,j) = (d . v) / |d| (digest 3.9 example).
+  // UV(DXYZ(i,j)) * VXYZ(i,j) is VR(i,j) = (d . v) / |d| (docs/expressions.md, "Vectors").
   const Expression e = parseOk("VXYZ(1,2)*UV(DXYZ(1,2))");
   const std::vector<double> h = {0.7, 0.4, -0.9, 0.3, -1.2, 2.5};  // VX VY VZ DX DY DZ
   const double d = std::sqrt(0.3 * 0.3 + 1.2 * 1.2 + 2.5 * 2.5);

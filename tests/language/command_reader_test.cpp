@@ -1,4 +1,5 @@
-// Command files (.acf) and the incremental reader of the interactive prompt (seed §6.5).
+// Command files (.acf) and the incremental reader of the interactive prompt (docs/language.md,
+// "Command files and the prompt").
 
 #include "language/command_reader.hpp"
 

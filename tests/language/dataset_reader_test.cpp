@@ -1,4 +1,5 @@
-// One test per data-set syntax rule (seed §4.3), with the exact diagnostics expected.
+// One test per data-set syntax rule (docs/language.md, "Reading rules, as implemented"), with
+// the exact diagnostics expected.
 
 #include <gtest/gtest.h>
 

@@ -29,7 +29,8 @@ std::string resolveCommand(const char* written) {
   return r.status == NameResolution::Status::Resolved ? commandSchema()[r.index].name : "<none>";
 }
 
-TEST(Schema, CoversTheDigestKeywordInventory) {
+// Every statement of the ADAMS/Solver Reference Manual (docs/language.md, "Statements").
+TEST(Schema, CoversTheReferenceManualStatements) {
   for (const char* name :
        {"END",        "TITLE",      "FE_PART", "FLEX_BODY",   "MATERIAL",     "PART",
         "POINT_MASS", "GRAPHICS",   "MARKER",  "COUPLER",     "CVCV",         "GEAR",

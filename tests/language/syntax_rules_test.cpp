@@ -1,5 +1,6 @@
-// The syntax rules of seed §4.3 (data sets) and §6.5 (commands) that dataset_reader_test.cpp
-// and command_reader_test.cpp do not cover yet: one test per rule, with the exact diagnostics.
+// The syntax rules of data sets and commands (docs/language.md, "Reading rules, as implemented")
+// that dataset_reader_test.cpp and command_reader_test.cpp do not cover yet: one test per rule,
+// with the exact diagnostics.
 
 #include <gtest/gtest.h>
 

@@ -1,6 +1,6 @@
-// Model-level checks after reading (seed §6.4.2): one data set with seven independent errors
-// must report all seven in one pass, each with file:line:column, the statement and its id,
-// and what to change.
+// Model-level checks after reading (docs/language.md, "From data set to model"): one data set
+// with seven independent errors must report all seven in one pass, each with file:line:column,
+// the statement and its id, and what to change.
 
 #include <gtest/gtest.h>
 

@@ -61,7 +61,7 @@ TEST(SensorChecks, DefaultsAreEqAndAnErrorOfOneThousandth) {
       std::string(kHeader) + "SENSOR/1, FUNCTION=DZ(20), VALUE=5, RETURN\nEND\n", m, &ok);
   ASSERT_TRUE(ok) << all;
   EXPECT_EQ(m.sensors[0].test, Sensor::Test::Eq);
-  EXPECT_DOUBLE_EQ(m.sensors[0].error, 1e-3);  // ADAMS default (language digest)
+  EXPECT_DOUBLE_EQ(m.sensors[0].error, 1e-3);  // ADAMS default (docs/theory.md §9c)
   EXPECT_TRUE(m.sensors[0].returnToCommands);
 }
 
