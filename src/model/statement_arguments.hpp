@@ -1,7 +1,8 @@
 #pragma once
 // Typed reading of one statement's (or command's) arguments, with located diagnostics: the one
-// argument reader of the model builders, the analysis settings (EQUILIBRIUM, IC, INTEGRATOR)
-// and the command interpreter.
+// argument reader of the model builders and the analysis settings (EQUILIBRIUM, IC, INTEGRATOR).
+// The command interpreter's own helpers (number/numberOf in analysis/session*.cpp) are
+// firstNumber and error here, and are meant to be replaced by them.
 //
 // The language reader has already checked every argument against the schema (value kinds and
 // counts, required arguments of data-set statements; docs/language.md). These reads guard the
