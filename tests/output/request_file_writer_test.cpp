@@ -12,6 +12,7 @@
 
 #include "output/request_file.hpp"
 #include "output/request_file_reader.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::output {
 namespace {
@@ -52,9 +53,8 @@ std::vector<RequestEntry> twoEntries() {
 
 TEST(RequestFileWriter, ReproducesAdamsLayoutByteForByte) {
   const fs::path adamsFile =
-      fs::path(OPENMSS_SHARED_DIR) /
-      "validation/adams-joints/Revolute_Case01/test_Revolute_Case01_ADAMS.req";
-  if (!fs::exists(adamsFile)) GTEST_SKIP() << "shared validation data not found: " << adamsFile;
+      openmss::testing::adamsJointsDir() / "Revolute_Case01/test_Revolute_Case01_ADAMS.req";
+  ASSERT_TRUE(fs::exists(adamsFile)) << adamsFile;
 
   std::string error;
   const auto adams = readRequestFile(adamsFile.string(), &error);
