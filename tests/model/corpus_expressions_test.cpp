@@ -62,8 +62,9 @@ Counts parseEveryExpression(const fs::path& root) {
 TEST(CorpusExpressions, EveryFunctionExpressionOfTheJointModelsParses) {
   const Counts c = parseEveryExpression(openmss::testing::adamsJointsDir());
   EXPECT_EQ(c.files, 9);
-  // Their REQUEST F2=ORIENT(...)/JOINT(...) columns: at least one per model.
-  EXPECT_GE(c.parsed, 9);
+  // Their REQUEST columns F2=ORIENT(...), JOINT(...), ...: 96 expressions in the nine files.
+  EXPECT_EQ(c.parsed, 96);
+  EXPECT_EQ(c.user, 0);
 }
 
 TEST(CorpusExpressions, EveryFunctionExpressionOfTheCorpusParses) {
