@@ -18,6 +18,8 @@ ctest --output-on-failure -j 2 2>&1 | tee "$log" || ctest_status=$?
 fuzz_status=0
 "$root/scripts/fuzz.sh" 30 || fuzz_status=$?
 if ((fuzz_status != 0)); then echo "fuzz: failed (status $fuzz_status)"; fi
-counts=$("$root/scripts/ctest_counts.sh" "$log") || counts="no ctest summary (ctest status $ctest_status)"
+counts_status=0
+counts=$("$root/scripts/ctest_counts.sh" "$log") || counts_status=$?
+if ((counts_status != 0)); then counts="no ctest summary (ctest status $ctest_status)"; fi
 echo "$counts"
-if ((ctest_status != 0 || fuzz_status != 0)); then exit 1; fi
+if ((ctest_status != 0 || fuzz_status != 0 || counts_status != 0)); then exit 1; fi
