@@ -17,6 +17,7 @@
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
+#include "mechanics/pose.hpp"
 #include "model/model_builder.hpp"
 
 namespace openmss::mechanics {
@@ -138,6 +139,49 @@ TEST(RackPin, AFreePinionTurnsPositivelyAsTheRackFalls) {
   s.elementReaction(false, m.jointIndex.at(3), m.markerIndex.at(21), y.data(), f, tq);
   EXPECT_NEAR(tq.x(), kPinionInertia * alpha, 1e-12);
   EXPECT_NEAR(f.z(), -kRackMass * (kG + a), 1e-12);
+}
+
+TEST(RackPin, GivesTheFiguresRealAdamsPrintedForItsRackAndPinionCase) {
+  // The layout, masses and PD of the rack-and-pinion case ADAMS 2012 ran in the public
+  // projectchrono/chrono repository (data/adams/test_RackPinion_Case01, not copied here): PD =
+  // 0.1, a 1 kg rack, a 1 kg pinion with 0.1 kg m² about its axis. At t = 0 ADAMS's .req
+  // printed: rack acceleration −2.39187E-01 along ground z, pinion WDX +4.78373E+00, and the
+  // RACKPIN reaction on the pinion (0, 0, −9.56746E+00) N and (4.78373E-01, 0, 0) N m.
+  const model::Model m = build(
+      "rack and pinion as ADAMS ran it\n"
+      "PART/1, GROUND\n"
+      "MARKER/102, PART=1, QP=0,0,0, REULER=90D,90D,-90D\n"
+      "MARKER/103, PART=1, QP=0,-0.1,0, REULER=0D,180D,0D\n"
+      "PART/2, MASS=1, CM=201, IP=0.04,0.1,0.1\n"
+      "MARKER/201, PART=2, QP=0,0,0, REULER=90D,90D,-90D\n"
+      "MARKER/202, PART=2, QP=0,0,0, REULER=90D,90D,-90D\n"
+      "PART/3, MASS=1, CM=301, IP=0.1,0.1,0.04\n"
+      "MARKER/301, PART=3, QP=0,0.1,0, REULER=0D,180D,0D\n"
+      "MARKER/302, PART=3, QP=0,-0.1,0, REULER=0D,180D,0D\n"
+      "MARKER/303, PART=3, QP=0,0,0, REULER=0D,180D,0D\n"
+      "JOINT/1, REVOLUTE, I=102, J=202\n"
+      "JOINT/2, TRANSLATIONAL, I=103, J=302\n"
+      "JOINT/3, RACKPIN, I=202, J=303, PD=0.1\n"
+      "ACCGRAV/KGRAV=-9.80665\nEND\n");
+  MultibodySystem s(m);
+  Eigen::VectorXd y = s.initialState(), yp;
+  removeRedundantConstraints(s, y);
+  solveVelocities(s, 0.0, y);
+  ASSERT_TRUE(solveAccelerations(s, 0.0, y, yp));
+  const int rack = bodyOffset(m, s, 3);
+  // The pinion's angular acceleration in ground (w' is in body axes).
+  const int pinionBody = m.parts[m.partIndex.at(2)].body;
+  const Eigen::Vector3d wdot = toEigen(bodyPose(s.layout(), pinionBody, y.data()).a) *
+                               yp.segment<3>(s.layout().body(pinionBody) + L::kW);
+  Eigen::Vector3d f, tq;
+  s.elementReaction(false, m.jointIndex.at(3), m.markerIndex.at(202), y.data(), f, tq);
+  // ADAMS printed six significant digits: agreement to half a unit of the last one.
+  EXPECT_NEAR(yp(rack + L::kV + 2), -2.39187e-01, 5e-7);
+  EXPECT_NEAR(wdot.x(), 4.78373, 5e-6);
+  EXPECT_NEAR(f.z(), -9.56746, 5e-6);
+  EXPECT_NEAR(tq.x(), 4.78373e-01, 5e-7);
+  EXPECT_NEAR(f.x(), 0.0, 1e-12);
+  EXPECT_NEAR(tq.y(), 0.0, 1e-12);
 }
 
 }  // namespace
