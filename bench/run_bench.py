@@ -124,8 +124,11 @@ def run_openmss(args, kind, n, error, workdir, timeout, integrator="GSTIFF"):
 
 
 def run_peer(program, engine, kind, n, setting, timeout, label):
-    status, out, wall, rss = run_process([program, kind, str(n), str(END_TIME[kind]),
-                                          f"{setting:g}"], None, timeout)
+    # In a scratch folder of its own: MuJoCo writes MUJOCO_LOG.TXT into its working directory
+    # (it used to land at the repository root).
+    with tempfile.TemporaryDirectory(prefix="openmss-bench-peer-") as cwd:
+        status, out, wall, rss = run_process([os.path.abspath(program), kind, str(n),
+                                              str(END_TIME[kind]), f"{setting:g}"], cwd, timeout)
     result = {"engine": engine, "setting": label, "wall": wall, "rss": rss, "status": status}
     if status != 0:
         if status != "timeout":

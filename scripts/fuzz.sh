@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Fuzzes the language reader (fuzz/reader_fuzzer.cpp) with libFuzzer, AddressSanitizer and
 # UndefinedBehaviorSanitizer for SECONDS (default 600). Configures and builds a separate clang
-# build in build-fuzz/, seeds a temporary corpus with every .adm/.acf of the shared validation
-# data (../shared/validation/corpus and adams-joints; nothing is copied into the repository),
+# build in build-fuzz/, seeds a temporary corpus with every .adm/.acf of the validation data
+# (tests/validation/adams-joints, and ../shared/validation/corpus when it is there),
 # prints libFuzzer's summary and exits non-zero on any crash, leak, timeout or sanitizer
 # report. Reproducers are kept in build-fuzz/artifacts/.
 #   scripts/fuzz.sh [SECONDS]
@@ -27,7 +27,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 mkdir -p "$work/corpus" "$build/artifacts"
 seeds=0
-for dir in "$shared/corpus" "$shared/adams-joints"; do
+for dir in "$shared/corpus" "$root/tests/validation/adams-joints"; do
   [[ -d $dir ]] || continue
   while IFS= read -r -d '' f; do
     cp "$f" "$work/corpus/$(printf '%03d' "$seeds")-$(basename "$f")"

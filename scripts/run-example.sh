@@ -5,4 +5,4 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
 mkdir -p "$root/out/piston"
-"$root/build/openmss" run "$root/examples/piston/piston.acf" --outdir "$root/out/piston" --summary
+"$root/build/openmss" run "$root/examples/piston/piston.acf" --outdir "$root/out/piston"

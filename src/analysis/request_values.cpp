@@ -109,6 +109,30 @@ void elementForce(const mechanics::MultibodySystem& s, model::MeasureKind kind, 
   s.elementReaction(ce, element, atJ ? jMarker : iMarker, y.data(), f, tq);
 }
 
+// True when GCON g's FUNCTION reads `marker` (as i, j or k of a measure).
+bool gconReads(const model::GeneralConstraint& g, int marker) {
+  for (const model::Measure& m : g.function.measures)
+    if (m.i == marker || m.j == marker || m.k == marker) return true;
+  return false;
+}
+
+// The reactions of the GCONs acting on `marker`, only those whose FUNCTION also reads `other`
+// when other >= 0 (docs/theory.md §5c, "Reaction"): force on the marker's part, torque about
+// the marker, ground axes, added to force and torque. A distance GCON DM(i, j) − L thus shows
+// in REQUEST/…, FORCE, I=i, J=j (and FX..TM(i, j)) as it does in ADAMS.
+void addGconReactions(const mechanics::MultibodySystem& s, int marker, int other,
+                      const Eigen::VectorXd& y, Eigen::Vector3d& force, Eigen::Vector3d& torque) {
+  const auto& gcons = s.model().gcons;
+  Eigen::Vector3d f, tq;
+  for (int e = 0; e < static_cast<int>(gcons.size()); ++e) {
+    if (!gconReads(gcons[e], marker) || (other >= 0 && !gconReads(gcons[e], other))) continue;
+    s.elementReaction(mechanics::MultibodySystem::ConstraintElement::Gcon, e, marker, y.data(), f,
+                      tq);
+    force += f;
+    torque += tq;
+  }
+}
+
 double component(const Eigen::Vector3d& f, const Eigen::Vector3d& tq, int comp,
                  const Eigen::Matrix3d& rm) {
   const Eigen::Vector3d fr = rm.transpose() * f;
@@ -180,6 +204,7 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
           tt += tq;
         }
       }
+      addGconReactions(s, ms.i, ms.j, y, ft, tt);
       // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...).
       forceElementsOnMarker(s, ms.i, ms.j, t, y, yp, f, tq);
       ft += f;
@@ -238,7 +263,8 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
       put(i.a - j.a, i.alpha - j.alpha, true);
       break;
     case RK::Force: {
-      // Every joint, motion and force element acting between I and J, on I.
+      // Every joint, joint primitive, motion, GCON and force element acting between I and J, on
+      // I.
       const auto& m = s.model();
       Eigen::Vector3d ft = Eigen::Vector3d::Zero(), tt = Eigen::Vector3d::Zero();
       auto between = [&](int a, int b) {
@@ -263,8 +289,9 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
           ft += f; tt += tq;
         }
       }
-      // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...) between I and J.
+      // GCONs and applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...) between I and J.
       if (r.jMarker >= 0) {
+        addGconReactions(s, r.iMarker, r.jMarker, y, ft, tt);
         forceElementsOnMarker(s, r.iMarker, r.jMarker, t, y, yp, f, tq);
         ft += f; tt += tq;
       }

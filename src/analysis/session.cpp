@@ -557,10 +557,16 @@ bool Session::simulate(const language::Statement& c) {
           }
         }
         text += forces;
+        // Name the request file only when one was written (OUTPUT/REQSAVE and at least one
+        // output step).
+        const std::string where =
+            req_.isOpen() ? "Outputs up to the last successful output step are in " + prefix_ +
+                                ".req. "
+                          : "";
         diags_.error({m.file, 0, 0}, "", text,
-                     "Outputs up to the last successful output step are in " + prefix_ +
-                         ".req. Look for a discontinuous force or motion near that time, or "
-                         "tighten HMAX.");
+                     where +
+                         "Look for a discontinuous force or motion near that time, or tighten "
+                         "HMAX.");
         report(diags_.all().back());
         t_ = bdf.t();
         summary_.time = t_;

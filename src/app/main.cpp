@@ -40,6 +40,7 @@ constexpr const char* kMainHelp =
     "  openmss check FILE.adm [--user-library LIB]  read and check a model, print its DOF\n"
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
     "  openmss COMMAND --help                       help on one command\n"
+    "  openmss --version                            print the version\n"
     "\n"
     "Exit status: 0 success, 1 input errors, 2 analysis failure, 64 usage error.\n";
 
@@ -93,8 +94,12 @@ int printSummary(const analysis::Session& s, bool ok) {
   if (!r.analysis.empty())
     std::printf("  analysis: %s, reached t = %g with %ld integration steps, %ld output steps\n",
                 r.analysis.c_str(), r.time, r.steps, r.outputSteps);
-  std::printf("  outputs:  %s%s\n", s.messageFilePath().c_str(),
-              m->output.reqsave ? (", " + s.requestFilePath()).c_str() : "");
+  // Only the files that are on disk (a model without requests, or a run that failed before
+  // its first output, has no request file).
+  std::string outputs;
+  for (const std::string& path : {s.messageFilePath(), s.requestFilePath()})
+    if (!path.empty() && fs::exists(path)) outputs += (outputs.empty() ? "" : ", ") + path;
+  std::printf("  outputs:  %s\n", outputs.empty() ? "(none written)" : outputs.c_str());
   if (!ok) std::printf("  the run did not complete: see the diagnostics above\n");
   return 0;
 }
@@ -119,9 +124,18 @@ int runModel(const std::string& path, double end, long steps, double dtout,
   opt.progress = !quiet && isatty(STDERR_FILENO);
   analysis::Session session(opt);
   if (!session.loadModel(path, fs::path(path).stem().string())) return 1;
-  std::string text = "SIMULATE/TRANSIENT, END=" + std::to_string(end) +
-                     (dtout > 0 ? ", DTOUT=" + std::to_string(dtout)
-                                : ", STEPS=" + std::to_string(steps));
+  // The shortest text that reads back as the same double (std::to_string's six decimals
+  // turned --end 1e-7 into END=0.000000): 1e-07, 0.1, 2.5.
+  auto exact = [](double v) {
+    char text[32];
+    for (int digits = 15; digits <= 17; ++digits) {
+      std::snprintf(text, sizeof text, "%.*g", digits, v);
+      if (std::strtod(text, nullptr) == v) break;
+    }
+    return std::string(text);
+  };
+  std::string text = "SIMULATE/TRANSIENT, END=" + exact(end) +
+                     (dtout > 0 ? ", DTOUT=" + exact(dtout) : ", STEPS=" + std::to_string(steps));
   language::CommandReader reader("<command line>");
   reader.feedLine(text);
   reader.finish();
@@ -211,6 +225,10 @@ int main(int argc, char** argv) {
     std::printf("%s", kMainHelp);
     return 0;
   }
+  if (std::string(argv[1]) == "--version") {
+    std::printf("openmss %s\n", OPENMSS_VERSION);
+    return 0;
+  }
   const std::string cmd = argv[1];
   if (cmd == "run") {
     if (wantsHelp(argc, argv)) { std::printf("%s", kRunHelp); return 0; }
@@ -233,7 +251,10 @@ int main(int argc, char** argv) {
       else if (a == "--dtout") dtout = std::atof(next());
       else if (a == "--quiet") quiet = true;
       else if (a == "--user-library") user::setDefaultLibrary(fs::absolute(next()).string());
-      else if (a == "--summary") {}
+      else if (a.starts_with("--")) {
+        std::fprintf(stderr, "openmss run: unknown option %s\n%s", a.c_str(), kRunHelp);
+        return 64;
+      }
       else if (file.empty()) file = a;
       else { std::fprintf(stderr, "openmss run: unexpected argument %s\n", a.c_str()); return 64; }
     }

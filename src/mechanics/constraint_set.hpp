@@ -25,7 +25,7 @@ struct ConstraintEquation {
     MotionTranslation,  // (axis `axisJ` of J) . (P_I - P_J) minus f(t)
     MotionAngle,        // body 1-2-3 angle `axisI` (0,1,2 = B1,B2,B3) of I rel J minus f(t)
     Convel,             // x_I.y_J + y_I.x_J: mirror symmetry of I and J about the bisecting plane
-    RackPin,            // z_J.(P_I - P_J) - ratio * (angle of x_I about z_I from z_J) - offset
+    RackPin,            // z_J.(P_I - P_J) + ratio * (angle of x_I about z_I from z_J) - offset
     Screw,              // z_J.(P_I - P_J) - ratio * (angle of x_I about z_J from x_J) - offset
     Coupled,            // sum of terms scale * (joint displacement - reference): COUPLER, GEAR
     General,            // a GCON's FUNCTION of marker measures (general_constraint.hpp)
@@ -165,8 +165,10 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
     case K::Convel:
       return dot(i.a.c[0], j.a.c[1]) + dot(i.a.c[1], j.a.c[0]);
     case K::RackPin: {
+      // ADAMS's sign (docs/theory.md §5): turning the pinion by +theta about z_I moves it by
+      // -(PD/2) theta along z_J relative to the rack.
       const S angle = atan2Of(-dot(j.a.c[2], i.a.c[1]), dot(j.a.c[2], i.a.c[0]));
-      return modTurn(dot(j.a.c[2], i.p - j.p) - eq.ratio * angle - eq.offset);
+      return modTurn(dot(j.a.c[2], i.p - j.p) + eq.ratio * angle - eq.offset);
     }
     case K::Screw: {
       const S angle = atan2Of(dot(i.a.c[0], j.a.c[1]), dot(i.a.c[0], j.a.c[0]));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <utility>
 
@@ -20,6 +21,18 @@ std::string fitted(const std::string& text, std::size_t width) {
   out.resize(std::min(out.size(), width));
   out.resize(width, ' ');
   return out;
+}
+
+// One value in its 13-column field, always with a blank before it so that records split on
+// whitespace as well as at fixed columns (docs/output-files.md, "Numbers that do not fit"):
+// "%.5E" as ADAMS prints, but a value whose exponent needs three digits (|v| < 1e-99 or
+// >= 1e100) loses one mantissa digit, "-5.3552E-101", instead of running into the previous
+// field as "-5.35523E-101" would.
+void writeValue(std::FILE* file, double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.5E", value);
+  if (std::strlen(text) > 12) std::snprintf(text, sizeof text, "%.4E", value);
+  std::fprintf(file, "%13s", text);
 }
 
 struct LengthUnit {
@@ -119,10 +132,13 @@ void RequestFileWriter::writeStep(double time, const std::vector<std::array<doub
          " rows for " + std::to_string(requestCount_) + " requests; step not written");
     return;
   }
-  std::fprintf(file_, " %13.5E\n", time);
+  std::fputc(' ', file_);
+  writeValue(file_, time);
+  std::fputc('\n', file_);
   for (const std::array<double, 6>& values : rows) {
-    std::fprintf(file_, " %13.5E%13.5E%13.5E%13.5E%13.5E%13.5E\n", values[0], values[1], values[2],
-                 values[3], values[4], values[5]);
+    std::fputc(' ', file_);
+    for (const double v : values) writeValue(file_, v);
+    std::fputc('\n', file_);
   }
   if (std::fflush(file_) != 0 || std::ferror(file_)) {
     fail(std::string("cannot write request file ") + path_ + ": " + std::strerror(errno));

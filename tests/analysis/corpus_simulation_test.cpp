@@ -18,6 +18,7 @@
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
 #include "support/cli_run.hpp"
+#include "support/validation_data.hpp"
 
 namespace {
 
@@ -25,7 +26,7 @@ namespace fs = std::filesystem;
 using namespace openmss;
 using namespace openmss::testing;  // scratch, run, slurp, write (tests/support)
 
-const fs::path kCorpus = fs::path(OPENMSS_SHARED_DIR) / "validation" / "corpus";
+const fs::path kCorpus = openmss::testing::corpusDir();
 
 std::string lower(std::string s) {
   std::transform(s.begin(), s.end(), s.begin(),
@@ -68,7 +69,7 @@ std::string modelNameOf(const std::string& acf) {
 }
 
 TEST(CorpusSimulation, EverySupportedDataSetSimulatesToItsEnd) {
-  if (!fs::exists(kCorpus)) GTEST_SKIP() << "the corpus is absent: " << kCorpus;
+  if (!fs::exists(kCorpus)) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
   std::vector<fs::path> sets;
   for (const auto& e : fs::directory_iterator(kCorpus))
     if (e.path().extension() == ".adm") sets.push_back(e.path());

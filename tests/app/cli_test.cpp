@@ -12,6 +12,7 @@
 #include <string>
 
 #include "support/cli_run.hpp"
+#include "support/validation_data.hpp"
 
 namespace {
 
@@ -19,10 +20,9 @@ namespace fs = std::filesystem;
 
 using namespace openmss::testing;  // scratch, run, slurp, write (tests/support)
 
-const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation/adams-joints";
+const fs::path kJoints = adamsJointsDir();
 
 TEST(Check, PrintsTheDegreesOfFreedomOfEachValidationModel) {
-  if (!fs::exists(kJoints)) GTEST_SKIP() << "shared validation data absent: " << kJoints;
   const std::pair<const char*, int> expected[] = {
       {"Revolute_Case01", 1},  {"Revolute_Case02", 1},  {"Spherical_Case01", 3},
       {"Spherical_Case02", 3}, {"Universal_Case01", 2}, {"Universal_Case02", 2},

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "language/schema.hpp"
+#include "support/validation_data.hpp"
 
 namespace {
 
@@ -51,8 +52,8 @@ Result runPrompt(const std::string& script, const fs::path& dir) {
   return r;
 }
 
-const fs::path kRevolute = fs::path(OPENMSS_SHARED_DIR) /
-                           "validation/adams-joints/Revolute_Case01/test_Revolute_Case01.adm";
+const fs::path kRevolute =
+    openmss::testing::adamsJointsDir() / "Revolute_Case01/test_Revolute_Case01.adm";
 
 TEST(Prompt, HelpListsEveryCommandWithItsSupportAndNoPromptTextWhenPiped) {
   const fs::path dir = scratch("help");
@@ -86,7 +87,7 @@ TEST(Prompt, AnUnsupportedCommandIsReportedAndTheNextOneRuns) {
 }
 
 TEST(Prompt, ContinuationLinesModelLoadAndSimulate) {
-  if (!fs::exists(kRevolute)) GTEST_SKIP() << "validation data not found: " << kRevolute;
+  ASSERT_TRUE(fs::exists(kRevolute)) << kRevolute;
   const fs::path dir = scratch("simulate");
   fs::copy_file(kRevolute, dir / "rev.adm");
   const Result r = runPrompt(

@@ -10,13 +10,14 @@
 
 #include "language/reader.hpp"
 #include "language/schema.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::language {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kCorpus = fs::path(OPENMSS_SHARED_DIR) / "validation" / "corpus";
+const fs::path kCorpus = openmss::testing::corpusDir();
 
 std::vector<fs::path> corpusFiles(const std::string& extension) {
   std::vector<fs::path> files;
@@ -36,7 +37,7 @@ void expectLocated(const Diagnostics& diags) {
 
 TEST(Corpus, EveryDataSetReadsWithoutCrashAndWithLocatedDiagnostics) {
   auto files = corpusFiles(".adm");
-  if (files.empty()) GTEST_SKIP() << "corpus not found at " << kCorpus << "; skipping";
+  if (files.empty()) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
   int clean = 0;
   std::map<std::string, int> unsupported;
   for (const auto& f : files) {
@@ -58,7 +59,7 @@ TEST(Corpus, EveryDataSetReadsWithoutCrashAndWithLocatedDiagnostics) {
 
 TEST(Corpus, EveryCommandFileReadsWithoutCrashAndWithLocatedDiagnostics) {
   auto files = corpusFiles(".acf");
-  if (files.empty()) GTEST_SKIP() << "corpus not found at " << kCorpus << "; skipping";
+  if (files.empty()) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
   int clean = 0;
   std::map<std::string, int> unsupported;
   for (const auto& f : files) {

@@ -7,13 +7,14 @@
 #include <numbers>
 
 #include "language/reader.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::language {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation" / "adams-joints";
+const fs::path kJoints = openmss::testing::adamsJointsDir();
 const char* const kCases[] = {"Cylindrical_Case01", "Prismatic_Case01", "Prismatic_Case02",
                               "Revolute_Case01",    "Revolute_Case02",  "Spherical_Case01",
                               "Spherical_Case02",   "Universal_Case01", "Universal_Case02"};
@@ -31,7 +32,7 @@ std::string allDiagnostics(const Diagnostics& d) {
 }
 
 TEST(ValidationModels, AllNineDataSetsAndCommandFilesReadCleanly) {
-  if (!fs::is_directory(kJoints)) GTEST_SKIP() << "validation models not found at " << kJoints;
+  ASSERT_TRUE(fs::is_directory(kJoints)) << kJoints;
   for (const char* c : kCases) {
     const fs::path dir = kJoints / c;
     Dataset ds;
@@ -65,7 +66,7 @@ TEST(ValidationModels, AllNineDataSetsAndCommandFilesReadCleanly) {
 
 TEST(ValidationModels, RevoluteCase01HasTheStatementsAdamsRead) {
   const fs::path file = kJoints / "Revolute_Case01" / "test_Revolute_Case01.adm";
-  if (!fs::exists(file)) GTEST_SKIP() << "validation model not found: " << file;
+  ASSERT_TRUE(fs::exists(file)) << file;
   Dataset ds;
   Diagnostics diags;
   ASSERT_TRUE(readDatasetFile(file.string(), ds, diags)) << allDiagnostics(diags);

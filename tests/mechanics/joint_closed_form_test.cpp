@@ -86,12 +86,13 @@ TEST(ScrewJoint, AdvancesOnePitchPerTurnOverManyTurns) {
 
 TEST(RackPinJoint, RollsHalfThePitchDiameterPerRadian) {
   // A pinion (axis ground z) kept in the plane z = 0 (PLANAR) with its centre on y = 0
-  // (INPLANE), meshing with a rack whose pitch line is y = PD/2 (the +yI side, docs/theory.md),
-  // turned by a B3 motion at 2 rad/s for 5 s (10 rad): x = (PD/2) 2t.
+  // (INPLANE), meshing with a rack whose pitch line is y = −PD/2 (the −yI side, docs/theory.md
+  // §5), turned by a B3 motion at 2 rad/s for 5 s (10 rad): it rolls like a wheel on a floor,
+  // x = −(PD/2) 2t.
   const model::Model m = build(
       "rack and pinion\n"
       "PART/1, GROUND\n"
-      "MARKER/10, PART=1, QP=0,0.4,0, ZP=1,0.4,0, XP=0,0.4,1\n"
+      "MARKER/10, PART=1, QP=0,-0.4,0, ZP=1,-0.4,0, XP=0,-0.4,1\n"
       "MARKER/11, PART=1, QP=0,0,0\n"
       "MARKER/12, PART=1, QP=0,0,0, ZP=0,1,0, XP=1,0,0\n"
       "PART/2, MASS=1, CM=20, IP=1,1,2\n"
@@ -105,9 +106,9 @@ TEST(RackPinJoint, RollsHalfThePitchDiameterPerRadian) {
       "END\n");
   MultibodySystem s(m);
   march(s, 5.0, 0.05, [&](double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) {
-    EXPECT_NEAR(y(L::kR + 0), 0.4 * 2.0 * t, 1e-12) << t;
+    EXPECT_NEAR(y(L::kR + 0), -0.4 * 2.0 * t, 1e-12) << t;
     EXPECT_NEAR(y(L::kR + 1), 0.0, 1e-12) << t;
-    EXPECT_NEAR(y(L::kV + 0), 0.8, 1e-12) << t;
+    EXPECT_NEAR(y(L::kV + 0), -0.8, 1e-12) << t;
     EXPECT_NEAR(y(L::kW + 2), 2.0, 1e-12) << t;
     EXPECT_NEAR(yp(L::kV + 0), 0.0, 1e-11) << t;
   });

@@ -1,7 +1,7 @@
-// Every function expression in the real data sets of ../shared/validation parses: the corpus
-// (23 data sets) and the nine ADAMS joint models. USER(...) expressions call user-written
-// subroutines: they parse and keep their constant arguments; the model builder refuses them
-// while no subroutine is loaded (never accepted silently).
+// Every function expression in the real data sets parses: the nine ADAMS joint models
+// (tests/validation/adams-joints) and the corpus (23 data sets, outside the repository). USER(...)
+// expressions call user-written subroutines: they parse and keep their constant arguments; the
+// model builder refuses them while no subroutine is loaded (never accepted silently).
 
 #include <gtest/gtest.h>
 
@@ -10,14 +10,18 @@
 
 #include "expr/expression.hpp"
 #include "language/reader.hpp"
+#include "support/validation_data.hpp"
 
 namespace {
 
 namespace fs = std::filesystem;
 
-TEST(CorpusExpressions, EveryFunctionExpressionParses) {
-  const fs::path root = fs::path(OPENMSS_SHARED_DIR) / "validation";
-  if (!fs::exists(root / "corpus")) GTEST_SKIP() << "shared corpus absent: " << root / "corpus";
+struct Counts {
+  int parsed = 0, user = 0, files = 0;
+};
+
+// Parses every expression argument of every .adm under root.
+Counts parseEveryExpression(const fs::path& root) {
   int parsed = 0, user = 0, files = 0;
   for (const auto& entry : fs::recursive_directory_iterator(root)) {
     if (entry.path().extension() != ".adm") continue;
@@ -52,7 +56,23 @@ TEST(CorpusExpressions, EveryFunctionExpressionParses) {
   }
   std::cout << files << " data sets: " << parsed << " expressions parse, " << user
             << " USER(...) expressions keep their arguments" << std::endl;
-  EXPECT_GT(parsed, 600);
+  return {parsed, user, files};
+}
+
+TEST(CorpusExpressions, EveryFunctionExpressionOfTheJointModelsParses) {
+  const Counts c = parseEveryExpression(openmss::testing::adamsJointsDir());
+  EXPECT_EQ(c.files, 9);
+  // Their REQUEST columns F2=ORIENT(...), JOINT(...), ...: 96 expressions in the nine files.
+  EXPECT_EQ(c.parsed, 96);
+  EXPECT_EQ(c.user, 0);
+}
+
+TEST(CorpusExpressions, EveryFunctionExpressionOfTheCorpusParses) {
+  if (!fs::exists(openmss::testing::corpusDir()))
+    GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
+  const Counts c = parseEveryExpression(openmss::testing::corpusDir());
+  EXPECT_EQ(c.files, 23);
+  EXPECT_GT(c.parsed, 600);
 }
 
 }  // namespace

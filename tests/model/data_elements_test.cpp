@@ -13,6 +13,7 @@
 #include "language/reader.hpp"
 #include "model/data_element_builder.hpp"
 #include "model/model_builder.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::model {
 namespace {
@@ -143,9 +144,8 @@ TEST(DataElements, MotionFunctionsBindSplinesAndReportUnknownIds) {
 // builder alone (the files hold statements the solver does not support yet). The only
 // refusals are the user-subroutine curves (FUNCTION=USER, CURSUB).
 TEST(DataElements, EveryCorpusDataElementBuilds) {
-  const std::filesystem::path corpus =
-      std::filesystem::path(OPENMSS_SHARED_DIR) / "validation" / "corpus";
-  if (!std::filesystem::exists(corpus)) GTEST_SKIP() << "no corpus at " << corpus;
+  const std::filesystem::path corpus = openmss::testing::corpusDir();
+  if (!std::filesystem::exists(corpus)) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
   int splines = 0, matrices = 0, curves = 0, strings = 0, files = 0;
   for (const auto& entry : std::filesystem::directory_iterator(corpus)) {
     if (entry.path().extension() != ".adm") continue;

@@ -1,4 +1,4 @@
-// Request file reader: every .req real ADAMS wrote in the shared data, line-end variants,
+// Request file reader: every .req real ADAMS wrote in the validation data, line-end variants,
 // repeated output times and malformed files.
 
 #include "output/request_file_reader.hpp"
@@ -10,12 +10,14 @@
 #include <sstream>
 #include <string>
 
+#include "support/validation_data.hpp"
+
 namespace openmss::output {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation/adams-joints";
+const fs::path kJoints = openmss::testing::adamsJointsDir();
 
 std::string readText(const fs::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -52,7 +54,7 @@ class RealAdamsRequestFile : public ::testing::TestWithParam<std::string> {};
 TEST_P(RealAdamsRequestFile, ReadsHeaderDirectoryAndEveryStep) {
   const std::string name = GetParam();
   const fs::path path = kJoints / name / ("test_" + name + "_ADAMS.req");
-  if (!fs::exists(path)) GTEST_SKIP() << "shared validation data not found: " << path;
+  ASSERT_TRUE(fs::exists(path)) << path;
 
   std::string error;
   const auto data = readRequestFile(path.string(), &error);
@@ -89,14 +91,14 @@ TEST_P(RealAdamsRequestFile, ReadsHeaderDirectoryAndEveryStep) {
   EXPECT_EQ(lf->steps.back().rows, data->steps.back().rows);
 }
 
-INSTANTIATE_TEST_SUITE_P(SharedData, RealAdamsRequestFile,
+INSTANTIATE_TEST_SUITE_P(AdamsJoints, RealAdamsRequestFile,
                          ::testing::Values("Revolute_Case01", "Revolute_Case02", "Spherical_Case01",
                                            "Spherical_Case02", "Universal_Case01",
                                            "Universal_Case02"));
 
 TEST(RequestFileReader, ReadsValuesAsPrinted) {
   const fs::path path = kJoints / "Revolute_Case01/test_Revolute_Case01_ADAMS.req";
-  if (!fs::exists(path)) GTEST_SKIP() << "shared validation data not found: " << path;
+  ASSERT_TRUE(fs::exists(path)) << path;
   std::string error;
   const auto data = readRequestFile(path.string(), &error);
   ASSERT_TRUE(data) << error;
@@ -109,10 +111,9 @@ TEST(RequestFileReader, ReadsValuesAsPrinted) {
 
 TEST(RequestFileReader, ReadsAFileWithoutRequests) {
   // Real ADAMS output of a model without REQUEST statements, inch/pound units, LF line ends.
-  const fs::path path = fs::path(OPENMSS_SHARED_DIR) /
-                        "validation/corpus/"
+  const fs::path path = openmss::testing::corpusDir() /
                         "bthornton191__adamspy__test__existing_model__camelot_1_pull0_offset0.req";
-  if (!fs::exists(path)) GTEST_SKIP() << "shared validation data not found: " << path;
+  if (!fs::exists(path)) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
   std::string error;
   const auto data = readRequestFile(path.string(), &error);
   ASSERT_TRUE(data) << error;

@@ -12,6 +12,7 @@
 
 #include "output/request_file.hpp"
 #include "output/request_file_reader.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::output {
 namespace {
@@ -52,9 +53,8 @@ std::vector<RequestEntry> twoEntries() {
 
 TEST(RequestFileWriter, ReproducesAdamsLayoutByteForByte) {
   const fs::path adamsFile =
-      fs::path(OPENMSS_SHARED_DIR) /
-      "validation/adams-joints/Revolute_Case01/test_Revolute_Case01_ADAMS.req";
-  if (!fs::exists(adamsFile)) GTEST_SKIP() << "shared validation data not found: " << adamsFile;
+      openmss::testing::adamsJointsDir() / "Revolute_Case01/test_Revolute_Case01_ADAMS.req";
+  ASSERT_TRUE(fs::exists(adamsFile)) << adamsFile;
 
   std::string error;
   const auto adams = readRequestFile(adamsFile.string(), &error);
@@ -145,7 +145,8 @@ TEST(RequestFileWriter, RoundTripsEveryValueToPrintedPrecision) {
   }
   ASSERT_EQ(read->steps.size(), written.size());
   // Six significant digits: the printed value is within half a unit of the fifth decimal of
-  // the mantissa, i.e. 5e-6 of the value.
+  // the mantissa, i.e. 5e-6 of the value (5e-5 for three-digit exponents, printed with one
+  // digit less; these samples are exact in five digits anyway).
   constexpr double kPrintedRelative = 5.0e-6;
   for (std::size_t s = 0; s < written.size(); ++s) {
     EXPECT_NEAR(read->steps[s].time, written[s].time, kPrintedRelative * written[s].time);
@@ -160,6 +161,47 @@ TEST(RequestFileWriter, RoundTripsEveryValueToPrintedPrecision) {
       }
     }
   }
+}
+
+TEST(RequestFileWriter, ValuesWithThreeDigitExponentsStaySeparatedByBlanks) {
+  // The value -5.35523e-101 after another negative one: "%13.5E" printed the two as
+  // "-1.00000E+00-5.35523E-101". Every record must split on whitespace into six numbers, keep
+  // 79 columns, and read back at fixed columns to the printed five digits (relative 5e-5).
+  const std::array<double, 6> row = {-1.0,          -5.35523e-101, 7.25e-150,
+                                     -1.23456e+150, -0.0,          -9.99999e-100};
+  const std::vector<RequestEntry> entries = {{1, kDisplacementRequest, 201, 101, "D"}};
+  const fs::path path = scratchFile("three_digit_exponents");
+  std::string error;
+  {
+    RequestFileWriter writer;
+    ASSERT_TRUE(writer.open(path.string(), RequestFileHeader{}, entries, &error)) << error;
+    writer.writeStep(-3.5e-120, {row});
+    ASSERT_FALSE(writer.failed()) << writer.error();
+  }
+  const std::vector<std::string> lines = linesWithoutCr(readText(path));
+  ASSERT_GE(lines.size(), 2u);
+  const std::string& time = lines[lines.size() - 2];
+  const std::string& record = lines.back();
+  EXPECT_EQ(time, "  -3.5000E-120");
+  EXPECT_EQ(record.size(), 79u) << record;
+  std::istringstream fields(record);
+  std::vector<double> numbers;
+  std::string token;
+  while (fields >> token) numbers.push_back(std::stod(token));
+  ASSERT_EQ(numbers.size(), 6u) << record;
+  const auto read = readRequestFile(path.string(), &error);
+  ASSERT_TRUE(read) << error;
+  ASSERT_EQ(read->steps.size(), 1u);
+  EXPECT_EQ(read->steps[0].time, -3.5e-120);
+  for (std::size_t c = 0; c < 6; ++c) {
+    EXPECT_LE(std::abs(numbers[c] - row[c]), 5e-5 * std::abs(row[c])) << c << ": " << record;
+    EXPECT_EQ(read->steps[0].rows[0][c], numbers[c]) << c;
+  }
+  // Values that fit keep ADAMS's six digits; a three-digit exponent costs one digit (and
+  // -9.99999E-100 rounds to the five digits -1.0000E-99).
+  EXPECT_EQ(record.substr(1, 13), " -1.00000E+00");
+  EXPECT_EQ(record.substr(1 + 13, 13), " -5.3552E-101");
+  EXPECT_EQ(record.substr(1 + 5 * 13, 13), "  -1.0000E-99") << record;
 }
 
 TEST(RequestFileWriter, EveryStepIsOnDiskBeforeClose) {

@@ -20,13 +20,14 @@
 #include "adams_reference_tables.hpp"
 #include "output/request_file_reader.hpp"
 #include "request_comparison.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::validation {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation/adams-joints";
+const fs::path kJoints = openmss::testing::adamsJointsDir();
 constexpr long kEulerParameterRequest = 4;
 // The worst column may be off by this share of its scale (see docs/output-files.md).
 constexpr double kWorstAllowed = 1.0e-3;
@@ -113,10 +114,7 @@ class AdamsJoint : public ::testing::TestWithParam<std::string> {};
 TEST_P(AdamsJoint, MatchesAdams) {
   const std::string name = GetParam();
   const fs::path caseFolder = kJoints / name;
-  if (!fs::exists(caseFolder)) {
-    GTEST_SKIP() << "The shared validation data is not there (" << caseFolder
-                 << "); nothing to compare with.";
-  }
+  ASSERT_TRUE(fs::exists(caseFolder)) << caseFolder;
 
   // The reference: ADAMS's own request file where it exists, else its tables.
   RequestRun reference;
@@ -202,7 +200,7 @@ TEST_P(AdamsJointByIntegrator, MatchesAdams) {
   const IntegratorCase param = GetParam();
   const std::string& name = param.caseName;
   const fs::path caseFolder = kJoints / name;
-  if (!fs::exists(caseFolder)) GTEST_SKIP() << "no shared validation data at " << caseFolder;
+  ASSERT_TRUE(fs::exists(caseFolder)) << caseFolder;
   double end = kShortEnd;
   if (const char* e = std::getenv("OPENMSS_INTEGRATOR_END")) end = std::atof(e);
 

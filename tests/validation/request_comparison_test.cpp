@@ -12,13 +12,14 @@
 
 #include "adams_reference_tables.hpp"
 #include "output/request_file_reader.hpp"
+#include "support/validation_data.hpp"
 
 namespace openmss::validation {
 namespace {
 
 namespace fs = std::filesystem;
 
-const fs::path kJoints = fs::path(OPENMSS_SHARED_DIR) / "validation/adams-joints";
+const fs::path kJoints = openmss::testing::adamsJointsDir();
 constexpr long kEulerParameterRequest = 4;
 
 std::optional<RequestRun> adamsRun(const std::string& name) {
@@ -51,9 +52,7 @@ double columnRange(const RequestSeries& series, std::size_t column) {
 
 class ComparisonOnAdamsOutput : public ::testing::Test {
  protected:
-  void SetUp() override {
-    if (!fs::exists(kJoints)) GTEST_SKIP() << "shared validation data not found: " << kJoints;
-  }
+  void SetUp() override { ASSERT_TRUE(fs::exists(kJoints)) << kJoints; }
 };
 
 TEST_F(ComparisonOnAdamsOutput, AFileComparedWithItselfScoresZero) {
