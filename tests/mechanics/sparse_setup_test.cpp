@@ -227,8 +227,10 @@ TEST(SparseSetup, CorpusRanksAgree) {
     EXPECT_EQ(rd.removed, rs.removed) << entry.path();
     ++compared;
   }
-  if (compared == 0) GTEST_SKIP() << "no corpus model builds yet";
   std::printf("corpus models compared: %d\n", compared);
+  // 10 corpus models built when this floor was set (issue 23): fewer means the comparison
+  // silently lost models (a reader or builder regression), not that they agree.
+  EXPECT_GE(compared, 10);
 }
 
 TEST(SparseSetup, GeneratedChainsAgreeWithTheDensePath) {
