@@ -56,6 +56,7 @@ std::unique_ptr<Loaded> load(const std::string& text) {
   language::readDatasetText(text, "model.adm", ds, d);
   EXPECT_TRUE(model::buildModel(ds, l->model, d));
   for (const auto& x : d.all()) ADD_FAILURE() << format(x);
+  l->model.output.reqsave = true;  // OUTPUT/REQSAVE: the request rows reach the report
   l->system = std::make_unique<mechanics::MultibodySystem>(l->model);
   l->state = std::make_unique<analysis::RunState>(*l->system);
   const auto dof = analysis::countDegreesOfFreedom(*l->system, l->state->y);
@@ -97,10 +98,11 @@ TEST(RunDriver, DynamicAnalysisOfASpringDamperFollowsTheClosedForm) {
   }
   std::printf("GSTIFF ERROR=1e-7 through runTransient: worst |z - exact| %.2e over 201 outputs\n",
               worst);
-  // GSTIFF's local error control at ERROR = 1e-7 keeps the global error of this lightly damped
-  // oscillator (amplitude 0.1, about three periods) within 1e-5, 1e-4 of the amplitude; a
-  // wrong period or damping would miss by the amplitude itself.
-  EXPECT_LT(worst, 1e-5);
+  // GSTIFF at ERROR = 1e-7 keeps the global error of this lightly damped oscillator
+  // (amplitude 0.1, about three periods) near ERROR: 1.6e-7 measured; 1e-6 (1e-5 of the
+  // amplitude) leaves room for another platform's rounding, while a wrong period, damping or
+  // output time would miss by a good fraction of the amplitude.
+  EXPECT_LT(worst, 1e-6);
   EXPECT_DOUBLE_EQ(l->state->t, 2.0);
   EXPECT_TRUE(l->state->initialized);
   EXPECT_EQ(l->state->summary.analysis, "dynamic");
