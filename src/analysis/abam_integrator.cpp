@@ -40,7 +40,7 @@ std::string format(const char* pattern, double value) {
 }  // namespace
 
 struct AbamIntegrator::Engine {
-  const CoordinatePartitioning* partitioning = nullptr;
+  const mechanics::CoordinatePartitioning* partitioning = nullptr;
   SUNContext context = nullptr;
   void* cvode = nullptr;
   N_Vector x = nullptr, work = nullptr, weights = nullptr, localErrors = nullptr;
@@ -49,7 +49,7 @@ struct AbamIntegrator::Engine {
   Eigen::VectorXd xWork, xdotWork, yWork, ypWork;
   std::string lastMessage;
 
-  explicit Engine(const CoordinatePartitioning& p) : partitioning(&p) {
+  explicit Engine(const mechanics::CoordinatePartitioning& p) : partitioning(&p) {
     SUNContext_Create(nullptr, &context);
   }
   ~Engine() { release(); if (context) SUNContext_Free(&context); }

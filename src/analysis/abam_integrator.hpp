@@ -1,5 +1,5 @@
 #pragma once
-// ABAM: coordinate partitioning (analysis/coordinate_partitioning.hpp) and CVODE's variable-
+// ABAM: coordinate partitioning (mechanics/coordinate_partitioning.hpp) and CVODE's variable-
 // order Adams-Bashforth-Moulton method on the independent positions and velocities
 // (docs/integrators.md, "ABAM"). The state offered to the analyses (y, y') is the full DAE
 // layout of mechanics/state_layout.hpp, recovered from the independent coordinates at every
@@ -15,7 +15,7 @@
 
 #include <Eigen/Dense>
 
-#include "analysis/coordinate_partitioning.hpp"
+#include "mechanics/coordinate_partitioning.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/integrator.hpp"
@@ -52,7 +52,7 @@ class AbamIntegrator final : public solvers::Integrator {
   // Largest |eigenvalue| of the reduced Jacobian at the last estimate (1/s).
   double spectralRadius() const { return spectralRadius_; }
   int partitions() const { return partitions_; }
-  const CoordinatePartitioning& partitioning() const { return partitioning_; }
+  const mechanics::CoordinatePartitioning& partitioning() const { return partitioning_; }
 
   struct Engine;  // CVODE objects and callbacks (abam_integrator.cpp)
 
@@ -65,7 +65,7 @@ class AbamIntegrator final : public solvers::Integrator {
 
   const mechanics::MultibodySystem& system_;
   AbamSettings settings_;
-  CoordinatePartitioning partitioning_;
+  mechanics::CoordinatePartitioning partitioning_;
   std::unique_ptr<Engine> engine_;
   solvers::IntegratorStatistics stats_, earlier_;  // earlier_: solvers before the last restart
   solvers::IntegratorFailure failure_;

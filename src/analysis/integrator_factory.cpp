@@ -143,12 +143,13 @@ std::optional<std::string> integratorUnavailable(const model::IntegratorSettings
       break;
     default:
       return std::string(model::integratorTypeName(s.type)) +
-             " is not implemented; use GSTIFF, WSTIFF, DSTIFF, HHT or NEWMARK "
+             " is not implemented; use GSTIFF, WSTIFF, DSTIFF, HHT, NEWMARK, ABAM or MERSON "
              "(docs/integrators.md compares them)";
   }
   if (s.formulation == IntegratorFormulation::Si2 && !isBdfFamily(s.type) &&
       s.type != IntegratorType::Dstiff)
-    return std::string("the SI2 formulation is implemented for GSTIFF and WSTIFF only, not ") +
+    return std::string("the SI2 formulation is implemented for GSTIFF, WSTIFF and DSTIFF only, "
+                       "not ") +
            model::integratorTypeName(s.type) + "; use I3";
   if (s.formulation == IntegratorFormulation::Si1)
     return std::string("the SI1 formulation is not implemented; use I3 or SI2");
@@ -171,11 +172,11 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
   if (s.type == IntegratorType::Dstiff) p.formulation = IntegratorFormulation::Si2;
   p.error = s.error.value_or(1e-3);
   p.maxit = s.maxit;
-  // DSTIFF (seed Table 4) and ABAM (Table 5, DSOLVER/INTPAR) have no step limit; nor has
+  // DSTIFF and ABAM (docs/integrators.md, "Defaults") have no step limit; nor has
   // MERSON (its steps land on the output times; docs/integrators.md, "MERSON").
   const bool dstiff = s.type == IntegratorType::Dstiff || s.type == IntegratorType::Abam ||
                       s.type == IntegratorType::Merson;
-  // Seed Table 4: HMAX is the output step (GSTIFF; HHT and NEWMARK alike), unlimited for
+  // ADAMS's defaults (docs/integrators.md, "Defaults"): HMAX is the output step (GSTIFF; HHT and NEWMARK alike), unlimited for
   // DSTIFF; HINIT half the output step for GSTIFF, a twentieth for DSTIFF (and for HHT, as
   // ADAMS's HHT logs show); HMIN 1e-6 HMAX for GSTIFF (DSTIFF's own round-off rule).
   p.hmax = s.hmax.value_or(dstiff ? std::numeric_limits<double>::infinity() : outputStep);

@@ -1,9 +1,10 @@
 #pragma once
 // From the INTEGRATOR settings (statement or command) to a running integrator: ADAMS's
-// defaults resolved against the output step (seed Tables 4 and 5, docs/integrators.md), the
-// method chosen (GSTIFF, WSTIFF, HHT, NEWMARK; DSTIFF and ABAM from solvers/ida_integrator,
-// solvers/abam_...), the formulation (I3, or SI2 for the BDF family) and output
-// interpolation. The session talks to the result through solvers/integrator.hpp only; its
+// defaults resolved against the output step (docs/integrators.md, "Defaults"), the method
+// chosen (GSTIFF, WSTIFF, HHT, NEWMARK from solvers/; DSTIFF from solvers/ida_integrator; ABAM
+// and MERSON from analysis/abam_integrator and analysis/merson_integrator), the formulation
+// (I3, or SI2 for the BDF family) and output interpolation. The dynamic driver
+// (analysis/dynamic_run.cpp) talks to the result through solvers/integrator.hpp only; its
 // state is always the I3 state of the MultibodySystem.
 
 #include <memory>

@@ -120,7 +120,7 @@ bool linearize(const mechanics::MultibodySystem& system, double t, const Eigen::
   if (n == 0)
     return refuse(
         "the model has no degree of freedom at this configuration; a linear analysis needs at "
-        "least one (seed: it is not applicable to systems with zero degrees of freedom)");
+        "least one (ADAMS does not linearise a model without degrees of freedom either)");
   std::vector<int> selected;
   out.positionBasis = request.basis == LinearBasis::Orthonormal
                           ? orthonormal

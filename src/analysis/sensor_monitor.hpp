@@ -3,7 +3,7 @@
 // integrator step the monitor evaluates each sensor at the step's end; a sensor whose test
 // starts to hold inside the step has its event time located on the integrator's own
 // interpolant (Illinois secant, or bisection with BISECTION) to a small fraction of its ERROR.
-// The caller (analysis/session.cpp) then carries out the output-side actions (PRINT, HALT,
+// The caller (analysis/dynamic_run.cpp) then carries out the output-side actions (PRINT, HALT,
 // RETURN, DT); the monitor itself restarts the integrator at the event when the actions need
 // it (RESTART, STEPSIZE, DT, EVALUATE, HALT, RETURN) and stores the EVALUATE values that
 // SENVAL(id) reads.

@@ -108,7 +108,7 @@ bool writeMatlabStateMatrices(const std::string& base, const LinearSystem& linea
     const Eigen::MatrixXd& matrix;
   } matrices[] = {{".a", linear.a}, {".b", linear.b}, {".c", linear.c}, {".d", linear.d}};
   for (const auto& m : matrices) {
-    if (m.matrix.size() == 0) continue;  // no inputs or no outputs: fewer files (seed §7.9)
+    if (m.matrix.size() == 0) continue;  // no inputs or no outputs: fewer files (docs/theory.md §8b, "STATEMAT files")
     if (!writeFlat(base + m.extension, m.matrix, error)) return false;
     written.push_back(base + m.extension);
   }

@@ -1,5 +1,5 @@
 #pragma once
-// Writers of the state matrices of LINEAR/STATEMAT (seed §7.9, docs/theory.md "Linear
+// Writers of the state matrices of LINEAR/STATEMAT (docs/theory.md "Linear
 // analysis"): MATLAB format, one ASCII flat file per matrix and per identifier list; MATRIXx
 // format, one file in a MATSAVE-like layout.
 

@@ -2,6 +2,7 @@
 
 #include <fstream>
 
+#include "app/print_diagnostics.hpp"
 #include "language/reader.hpp"
 #include "language/schema.hpp"
 
@@ -23,10 +24,6 @@ std::vector<std::string> fileLines(const std::string& path) {
     lines.push_back(l);
   }
   return lines;
-}
-
-void printDiagnostics(const Diagnostics& d) {
-  for (const auto& x : d.all()) std::fprintf(stderr, "%s\n", format(x).c_str());
 }
 
 std::string firstValue(const language::Statement& c, const char* argument) {
@@ -59,7 +56,7 @@ std::string commandHelp() {
   return out;
 }
 
-CommandRunner::CommandRunner(analysis::Session& session, std::FILE* helpOut)
+CommandRunner::CommandRunner(commands::Session& session, std::FILE* helpOut)
     : session_(session), helpOut_(helpOut) {}
 
 bool CommandRunner::loadModel(const language::Statement& c, const fs::path& base) {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/session.hpp"
+#include "commands/session.hpp"
 #include "language/dataset.hpp"
 
 namespace openmss::app {
@@ -34,7 +34,7 @@ enum class RunOutcome {
 class CommandRunner {
  public:
   // `helpOut` receives the HELP listing (stdout for the program).
-  CommandRunner(analysis::Session& session, std::FILE* helpOut);
+  CommandRunner(commands::Session& session, std::FILE* helpOut);
 
   // Executes one command whose source lines are `echo` (written to the message file first).
   // Returns false when the command failed; the reason is in the session's diagnostics.
@@ -50,7 +50,7 @@ class CommandRunner {
  private:
   bool loadModel(const language::Statement& command, const std::filesystem::path& base);
 
-  analysis::Session& session_;
+  commands::Session& session_;
   std::FILE* helpOut_;
   bool modelLoaded_ = false;
   int commandFileDepth_ = 0;  // FILE/COMMAND nesting, bounded against a file that runs itself

@@ -12,14 +12,15 @@
 #include <string>
 #include <vector>
 
-#include "analysis/session.hpp"
+#include "analysis/model_summary.hpp"
 #include "app/command_runner.hpp"
+#include "app/print_diagnostics.hpp"
 #include "app/prompt.hpp"
+#include "commands/session.hpp"
 #include "expr/standalone.hpp"
 #include "language/command_reader.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
-#include "mechanics/loop_count.hpp"
 #include "model/model_builder.hpp"
 #include "user/user_library.hpp"
 
@@ -76,11 +77,7 @@ bool wantsHelp(int argc, char** argv) {
   return false;
 }
 
-void printDiagnostics(const Diagnostics& d) {
-  for (const auto& x : d.all()) std::fprintf(stderr, "%s\n", format(x).c_str());
-}
-
-int printSummary(const analysis::Session& s, bool ok) {
+int printSummary(const commands::Session& s, bool ok) {
   const model::Model* m = s.model();
   if (!m) return 1;
   std::printf("OpenMSS: %s\n", m->title.c_str());
@@ -105,10 +102,10 @@ int printSummary(const analysis::Session& s, bool ok) {
 }
 
 int runCommandFile(const std::string& path, const std::string& outdir, bool quiet) {
-  analysis::SessionOptions opt;
+  commands::SessionOptions opt;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
-  analysis::Session session(opt);
+  commands::Session session(opt);
   app::CommandRunner runner(session, stdout);
   const app::RunOutcome outcome = runner.runCommandFile(path);
   if (outcome == app::RunOutcome::InputError) return 1;
@@ -119,10 +116,10 @@ int runCommandFile(const std::string& path, const std::string& outdir, bool quie
 
 int runModel(const std::string& path, double end, long steps, double dtout,
              const std::string& outdir, bool quiet) {
-  analysis::SessionOptions opt;
+  commands::SessionOptions opt;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
-  analysis::Session session(opt);
+  commands::Session session(opt);
   if (!session.loadModel(path, fs::path(path).stem().string())) return 1;
   // The shortest text that reads back as the same double (std::to_string's six decimals
   // turned --end 1e-7 into END=0.000000): 1e-07, 0.1, 2.5.
@@ -157,7 +154,7 @@ int check(const std::string& path) {
   bool built = false;
   // Build even after reading errors, so that one pass reports the model-level errors too.
   built = model::buildModel(ds, m, diags);
-  printDiagnostics(diags);
+  app::printDiagnostics(diags);
   if (!built || diags.hasErrors()) {
     std::printf("%s: %d error(s), %d warning(s)\n", path.c_str(), diags.errorCount(),
                 diags.warningCount());
@@ -165,21 +162,20 @@ int check(const std::string& path) {
   }
   mechanics::MultibodySystem system(m);
   Eigen::VectorXd y = system.initialState();
-  const int gruebler = mechanics::ConstraintSet::grueblerCount(m);
-  const mechanics::LoopCount loops = mechanics::countLoops(m);
-  auto red = mechanics::removeRedundantConstraints(system, y);
+  const analysis::DegreeOfFreedomCount dof = analysis::countDegreesOfFreedom(system, y);
   std::printf("%s: %s\n", path.c_str(), m.title.c_str());
   std::printf("  %d moving parts, %zu joints, %zu motions, %zu force elements, %zu requests\n",
               m.bodyCount(), m.joints.size(), m.motions.size(),
               m.sforces.size() + m.springDampers.size() + m.linearFields.size() +
                   m.vectorForces.size(),
               m.requests.size());
-  std::printf("  Gruebler count: %d\n", gruebler);
-  std::printf("  loops: %d independent, %s dependent\n", loops.independent,
-              loops.enumerated ? std::to_string(loops.dependent).c_str() : "(not enumerated)");
-  for (int k : red.removed)
+  std::printf("  Gruebler count: %d\n", dof.gruebler);
+  std::printf("  loops: %d independent, %s dependent\n", dof.loops.independent,
+              dof.loops.enumerated ? std::to_string(dof.loops.dependent).c_str()
+                                   : "(not enumerated)");
+  for (int k : dof.removed)
     std::printf("  redundant: %s\n", system.constraints().describe(k, m).c_str());
-  std::printf("DOF %d\n", 6 * m.bodyCount() - red.rank);
+  std::printf("DOF %d\n", dof.degreesOfFreedom);
   std::printf("%d error(s), %d warning(s)\n", diags.errorCount(), diags.warningCount());
   return 0;
 }
@@ -205,7 +201,7 @@ int eval(int argc, char** argv) {
   Diagnostics d;
   double v = 0.0, dv = 0.0;
   if (!expr::evaluateStandalone(text, time, &v, &dv, d)) {
-    printDiagnostics(d);
+    app::printDiagnostics(d);
     return 1;
   }
   std::printf("%.17g\n", v);

@@ -5,8 +5,8 @@
 #include <utility>
 #include <vector>
 
-#include "analysis/session.hpp"
 #include "app/command_runner.hpp"
+#include "commands/session.hpp"
 #include "language/command_reader.hpp"
 
 namespace openmss::app {
@@ -36,7 +36,7 @@ void discardReady(language::CommandReader& reader) {
 
 // One line on what a successful command did, so the user sees progress without opening the
 // message file.
-void acknowledge(const language::Statement& c, const analysis::Session& session) {
+void acknowledge(const language::Statement& c, const commands::Session& session) {
   if (c.name == "FILE" && c.has("MODEL") && session.model()) {
     const model::Model& m = *session.model();
     std::printf(
@@ -55,10 +55,10 @@ void acknowledge(const language::Statement& c, const analysis::Session& session)
 }  // namespace
 
 int runPrompt(std::istream& in, const PromptOptions& options) {
-  analysis::SessionOptions sessionOptions;
+  commands::SessionOptions sessionOptions;
   sessionOptions.outputDirectory = options.outputDirectory;
   sessionOptions.progress = options.interactive;
-  analysis::Session session(sessionOptions);
+  commands::Session session(sessionOptions);
   CommandRunner runner(session, stdout);
   language::CommandReader reader("<stdin>");
   const std::filesystem::path here = ".";
@@ -91,7 +91,7 @@ int runPrompt(std::istream& in, const PromptOptions& options) {
     echo.push_back(line);
     more = reader.feedLine(line);
     if (reportReading(reader)) {
-      // Seed §6.5.2: a command with a syntax error is ignored as a whole, rather than run
+      // docs/language.md ("Decision"): a command with a syntax error is ignored as a whole, rather than run
       // without the argument that was wrong.
       discardReady(reader);
       anyFailed = true;

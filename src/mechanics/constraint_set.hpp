@@ -89,10 +89,10 @@ class ConstraintSet {
   int size() const { return static_cast<int>(eqs_.size()); }
   // "JOINT/1 (REVOLUTE) equation Zi.Xj"
   std::string describe(int k, const model::Model& model) const;
-  // Number of scalar equations a joint type imposes (Gruebler count, seed Table 1).
+  // Number of scalar equations a joint type imposes (Gruebler count, docs/theory.md §5).
   static int equationCount(model::JointType t);
   static int equationCount(model::JPrimType t);
-  // 6 (moving parts) - the equations of every joint, joint primitive and motion (seed Table 1).
+  // 6 (moving parts) - the equations of every joint, joint primitive and motion (docs/theory.md §5).
   static int grueblerCount(const model::Model& model);
   // The initial-condition equations of the joints (IC, ICTRAN, ICROT displacements): the joint
   // coordinate minus the given value. They are not part of the DAE; the initial-condition

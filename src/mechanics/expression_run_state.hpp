@@ -1,7 +1,7 @@
 #pragma once
 // History that function expressions need beyond the current state (docs/theory.md §11a): the
 // reference angle of each cumulative AX/AY/AZ and the recorded past of each DELAY argument.
-// The analysis session owns one, next to the integrator's accepted state, and updates it only
+// The run state (analysis/run_state.hpp) owns one, next to the accepted state, and updates it only
 // after accepted steps (accept), so rejected steps and corrector iterations never change it and
 // a run repeated gives bit-identical results. The Model stays immutable: evaluation receives
 // the run state through MultibodySystem::setRunState, never through the Model.

@@ -1,5 +1,5 @@
 #pragma once
-// Initial-condition analysis (seed chapter 2): find redundant constraint equations, assemble
+// Initial-condition analysis (docs/theory.md §7): find redundant constraint equations, assemble
 // positions with the least change to the data set, then velocities, then accelerations and
 // constraint forces. The same solves give kinematic analysis and consistent outputs.
 

@@ -1,5 +1,5 @@
 #pragma once
-// Kinematic loops of a model (seed §2.6.2): the graph whose vertices are the parts (ground
+// Kinematic loops of a model (docs/theory.md §5, "Loops"): the graph whose vertices are the parts (ground
 // included) and whose edges are the joints and joint primitives. The number of independent
 // loops is the graph's cyclomatic number, edges - vertices + connected components; every other
 // closed chain of parts is a dependent loop (a combination of independent ones).

@@ -80,7 +80,7 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
       return true;
     }
     case K::AX: case K::AY: case K::AZ: {
-      // Cumulative (docs/theory.md §11a): the digest §3.6 principal angle plus the whole turns
+      // Cumulative (docs/theory.md §11a): the principal angle of position_measures.hpp plus the whole turns
       // counted from the run's last accepted value.
       const M3<T>& ai = i.a;
       const M3<T>& aj = j.a;

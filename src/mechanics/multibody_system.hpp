@@ -221,7 +221,6 @@ class MultibodySystem {
   ConstraintSet constraints_;
   std::vector<double> mass_;               // per body, divided by UCF
   std::vector<Eigen::Matrix3d> inertia_;   // per body, divided by UCF
-  mutable std::vector<double> scratchValues_, scratchGrad_;
   ForceElements forces_;  // applied force elements (one code path for residual and read-back)
   UserEquations user_;    // VARIABLE, DIFF, LSE, TFSISO rows (docs/theory.md §4a)
   // Last motion target per motion (VELOCITY/ACCELERATION motions integrate f by quadrature;

@@ -11,7 +11,7 @@ namespace openmss::mechanics {
 
 // The measure of marker i (origin pi, axes ai) relative to marker j (pj, aj), components in
 // the axes ak. Ground is the zero origin with identity axes. AX, AY and AZ are principal
-// values in (-pi, pi] (digest §3.6 formulas):
+// values in (-pi, pi] (the ADAMS/Solver function reference of AX, AY, AZ):
 //   AX = atan2(-z_i.y_j, z_i.z_j), AY = atan2(z_i.x_j, z_i.z_j), AZ = atan2(x_i.y_j, x_i.x_j).
 // Returns false for a kind that is not a position measure.
 template <class S>

@@ -1,4 +1,5 @@
 #include "model/analysis_settings.hpp"
+#include "model/settings_arguments.hpp"
 
 #include <string>
 

@@ -7,8 +7,6 @@
 #include <numbers>
 #include <optional>
 
-#include "common/diagnostics.hpp"
-#include "language/dataset.hpp"
 
 namespace openmss::model {
 
@@ -61,19 +59,5 @@ struct IntegratorSettings {
 };
 const char* integratorTypeName(IntegratorType type);  // "GSTIFF", "HHT", ...
 const char* formulationName(IntegratorFormulation f);  // "I3", "SI2", "SI1"
-
-// Apply the arguments of an INTEGRATOR statement/command (or of the FORTRAN-era GSTIFF,
-// WSTIFF, DSTIFF commands: `method` then names the integrator they select). DEFAULT resets
-// everything first. Out-of-range values and arguments without an implementation are errors.
-bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& settings,
-                              Diagnostics& diags, const char* method = nullptr);
-
-// Apply the arguments of an EQUILIBRIUM or IC statement/command. Unsupported arguments
-// (the FORTRAN dynamic-relaxation options of EQUILIBRIUM) and out-of-range values are errors.
-// DEFAULT resets everything first. Returns false when an error was added.
-bool applyEquilibriumArguments(const language::Statement& s, EquilibriumSettings& settings,
-                               Diagnostics& diags);
-bool applyInitialConditionArguments(const language::Statement& s,
-                                    InitialConditionSettings& settings, Diagnostics& diags);
 
 }  // namespace openmss::model

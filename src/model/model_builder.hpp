@@ -6,6 +6,7 @@
 #include "common/diagnostics.hpp"
 #include "language/dataset.hpp"
 #include "model/model.hpp"
+#include "model/settings_arguments.hpp"
 
 namespace openmss::model {
 

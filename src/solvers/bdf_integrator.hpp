@@ -31,7 +31,7 @@ struct BdfSettings {
   // rescaling); a step change then costs an interpolation error.
   bool fixedCoefficients = false;
   // PATTERN: when set, the Jacobian is also re-formed at every corrector iteration j whose
-  // flag pattern[j % 10] is true, and always at the first (seed Table 4, note 5). Unset: it
+  // flag pattern[j % 10] is true, and always at the first (docs/integrators.md, "Defaults"). Unset: it
   // is re-formed only when cj has drifted or the corrector fails.
   bool patternGiven = false;
   bool pattern[10] = {true, false, false, false, true, false, false, false, true, false};

@@ -23,7 +23,7 @@ struct IntegratorStatistics {
   double stepSize = 0.0;
 };
 
-// What the integrator knew when it gave up (seed: "when, which equation, which variable").
+// What the integrator knew when it gave up (when, which equation, which variable: what a user needs to find the cause).
 struct IntegratorFailure {
   double time = 0.0;
   double stepSize = 0.0;

@@ -109,7 +109,7 @@ TEST(LinearCli, StateMatricesInMatlabFilesMatchTheClosedForm) {
   expectMatrix(readFlat(dir / "plant.st"), st, "states");
   expectMatrix(readFlat(dir / "plant.pi"), pi, "inputs");
   expectMatrix(readFlat(dir / "plant.po"), po, "outputs");
-  // Without PINPUT/POUTPUT only A and the states are written (seed: fewer files), named
+  // Without PINPUT/POUTPUT only A and the states are written (as ADAMS, fewer files), named
   // after the output prefix.
   EXPECT_TRUE(fs::exists(dir / "sm.a"));
   EXPECT_TRUE(fs::exists(dir / "sm.st"));

@@ -12,7 +12,7 @@
 #include <string>
 #include <vector>
 
-#include "analysis/session.hpp"
+#include "commands/session.hpp"
 #include "language/command_reader.hpp"
 #include "output/request_file_reader.hpp"
 #include "support/cli_run.hpp"
@@ -39,7 +39,7 @@ std::string fallingMass(const std::string& sensor) {
 
 // Runs the commands through a Session; returns it for its summary.
 struct SensorRun {
-  std::unique_ptr<analysis::Session> session;
+  std::unique_ptr<commands::Session> session;
   fs::path dir;
   bool ok = true;
 };
@@ -49,10 +49,10 @@ SensorRun simulate(const std::string& name, const std::string& sensor,
   SensorRun r;
   r.dir = scratch(name);
   write(r.dir / "f.adm", fallingMass(sensor));
-  analysis::SessionOptions options;
+  commands::SessionOptions options;
   options.outputDirectory = r.dir.string();
   options.echoDiagnostics = false;
-  r.session = std::make_unique<analysis::Session>(options);
+  r.session = std::make_unique<commands::Session>(options);
   r.ok = r.session->loadModel((r.dir / "f.adm").string(), "f");
   language::CommandReader reader("f.acf", 3);
   for (const auto& c : commands) reader.feedLine(c);

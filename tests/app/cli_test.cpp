@@ -166,7 +166,7 @@ TEST(Run, AFailedDynamicRunNamesTheEquationAndKeepsEveryOutputStep) {
   write(dir / "blow.adm", model);
   const Result r = run("run blow.adm --end 1 --dtout 0.1 --quiet", dir);
   EXPECT_EQ(r.status, 2) << r.output;
-  // The failure time is 0.55 to within HMIN = 1e-6 HMAX (GSTIFF's default, seed Table 4):
+  // The failure time is 0.55 to within HMIN = 1e-6 HMAX (GSTIFF's default, docs/integrators.md "Defaults"):
   // printed 5.500000E-01 or 5.49999xE-01.
   EXPECT_TRUE(r.output.find("the dynamic analysis failed at time 5.5") != std::string::npos ||
               r.output.find("the dynamic analysis failed at time 5.49999") != std::string::npos)

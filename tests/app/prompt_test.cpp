@@ -124,7 +124,7 @@ TEST(Prompt, ContinuationLinesModelLoadAndSimulate) {
 
 TEST(Prompt, ASyntaxErrorIgnoresTheWholeCommandAndTheSessionGoesOn) {
   const fs::path dir = scratch("syntax");
-  // Seed §6.5.2: a command with a bad argument is not run at all.
+  // docs/language.md ("Decision"): a command with a bad argument is not run at all.
   const Result r = runPrompt("simulate/transient, end=abc\n, steps=5\nhelp\n", dir);
   EXPECT_EQ(r.status, 1);
   EXPECT_EQ(r.err,

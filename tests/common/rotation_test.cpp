@@ -74,7 +74,7 @@ TEST(Rotation, OrientSequencesAtTheirSingularMiddleAngle) {
 
 TEST(Rotation, AxisPointFrame) {
   Eigen::Matrix3d a;
-  // The seed's piston marker 15: ZP = (10,1,0), XP = (10,0,1) about QP = (10,0,0).
+  // Marker 15 of the ADAMS/Solver overview's piston example: ZP = (10,1,0), XP = (10,0,1) about QP = (10,0,0).
   ASSERT_TRUE(matrixFromAxisPoints({10, 0, 0}, {10, 1, 0}, {10, 0, 1}, true, true, &a));
   EXPECT_TRUE(a.col(2).isApprox(Eigen::Vector3d(0, 1, 0)));
   EXPECT_TRUE(a.col(0).isApprox(Eigen::Vector3d(0, 0, 1)));

@@ -209,7 +209,7 @@ TEST(MotionProfile, VelocityMotionDrivesAJointThroughManyTurns) {
   });
 }
 
-TEST(LoopCount, SeedFigureSevenHasTwoIndependentLoopsAndOneDependent) {
+TEST(LoopCount, AdamsOverviewFigureSevenHasTwoIndependentLoopsAndOneDependent) {
   model::Model m;
   m.parts.resize(6);  // 100 (ground) .. 105
   auto joint = [&](int a, int b) {
@@ -266,16 +266,16 @@ TEST(LoopCount, OpenChainHasNone) {
 namespace openmss::mechanics {
 namespace {
 
-TEST(SeedFigureSeven, GrueblerOneTwoIndependentLoopsOneDependent) {
+TEST(AdamsOverviewFigureSeven, GrueblerOneTwoIndependentLoopsOneDependent) {
   language::Dataset ds;
   Diagnostics d;
   ASSERT_TRUE(language::readDatasetFile(
-      OPENMSS_SOURCE_DIR "/tests/mechanics/joint_data/seed_figure7.adm", ds, d));
+      OPENMSS_SOURCE_DIR "/tests/mechanics/joint_data/adams_overview_figure7.adm", ds, d));
   model::Model m;
   ASSERT_TRUE(model::buildModel(ds, m, d));
   EXPECT_EQ(m.bodyCount(), 5);
   EXPECT_EQ(m.joints.size(), 7u);
-  // The seed: DOF = 6 (6 - 1) - (5 + 5 + 4 + 4 + 4 + 4 + 3) = 1.
+  // ADAMS/Solver overview, Figure 7: DOF = 6 (6 - 1) - (5 + 5 + 4 + 4 + 4 + 4 + 3) = 1.
   EXPECT_EQ(ConstraintSet::grueblerCount(m), 1);
   const LoopCount loops = countLoops(m);
   EXPECT_EQ(loops.independent, 2);

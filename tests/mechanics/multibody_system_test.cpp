@@ -146,7 +146,7 @@ TEST(InitialConditions, AssemblyMovesAMisplacedPartOntoItsJoint) {
 }
 
 TEST(InitialConditions, CoaxialHingesLeaveRedundantEquationsOut) {
-  // The seed's door: two revolute hinges on one axis. Five equations of the second hinge
+  // ADAMS's door (docs/theory.md §5): two revolute hinges on one axis. Five equations of the second hinge
   // repeat the first; DOF stays 1.
   const char* text =
       "door\n"

@@ -227,8 +227,10 @@ TEST(SparseSetup, CorpusRanksAgree) {
     EXPECT_EQ(rd.removed, rs.removed) << entry.path();
     ++compared;
   }
-  EXPECT_GT(compared, 0) << "no corpus model builds";
   std::printf("corpus models compared: %d\n", compared);
+  // 10 corpus models built when this floor was set (issue 23): fewer means the comparison
+  // silently lost models (a reader or builder regression), not that they agree.
+  EXPECT_GE(compared, 10);
 }
 
 TEST(SparseSetup, GeneratedChainsAgreeWithTheDensePath) {

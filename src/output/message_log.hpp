@@ -8,7 +8,7 @@
 
 #include "common/diagnostics.hpp"
 
-namespace openmss::analysis {
+namespace openmss::output {
 
 class MessageLog {
  public:
@@ -27,4 +27,4 @@ class MessageLog {
   std::FILE* file_ = nullptr;
 };
 
-}  // namespace openmss::analysis
+}  // namespace openmss::output

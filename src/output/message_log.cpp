@@ -1,6 +1,6 @@
-#include "analysis/message_log.hpp"
+#include "output/message_log.hpp"
 
-namespace openmss::analysis {
+namespace openmss::output {
 
 MessageLog::~MessageLog() { close(); }
 
@@ -24,4 +24,4 @@ void MessageLog::line(const std::string& text) {
 
 void MessageLog::diagnostic(const Diagnostic& d) { line(format(d)); }
 
-}  // namespace openmss::analysis
+}  // namespace openmss::output

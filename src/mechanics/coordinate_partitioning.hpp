@@ -10,7 +10,7 @@
 // map from z' to u (identity for translations, the right Jacobian of SO(3) for rotations).
 // From x at time t the full state is recovered: dependent positions by Newton on Phi(q, t) = 0,
 // dependent velocities from C u = Phi_t-terms, accelerations and multipliers by the KKT solve
-// (mechanics::solveAccelerations).
+// (solveAccelerations).
 
 #include <string>
 #include <vector>
@@ -19,11 +19,11 @@
 
 #include "mechanics/multibody_system.hpp"
 
-namespace openmss::analysis {
+namespace openmss::mechanics {
 
 class CoordinatePartitioning {
  public:
-  explicit CoordinatePartitioning(const mechanics::MultibodySystem& system);
+  explicit CoordinatePartitioning(const MultibodySystem& system);
 
   // Chooses the independent coordinates at the consistent state y (full DAE layout) and makes
   // y the reference configuration (z = 0). Returns false if C has no usable pivots.
@@ -60,7 +60,7 @@ class CoordinatePartitioning {
   void tangentMap(const Eigen::VectorXd& z, Eigen::MatrixXd& t) const;
   double pivotRatio(const Eigen::MatrixXd& cDependent) const;
 
-  const mechanics::MultibodySystem& system_;
+  const MultibodySystem& system_;
   int nb_ = 0;
   std::vector<int> rows_;         // constraint equations used (independent rows of C)
   std::vector<int> dependent_;    // pivot columns
@@ -71,4 +71,4 @@ class CoordinatePartitioning {
   mutable long positionIterations_ = 0;
 };
 
-}  // namespace openmss::analysis
+}  // namespace openmss::mechanics

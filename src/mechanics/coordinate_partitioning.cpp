@@ -1,14 +1,12 @@
-#include "analysis/coordinate_partitioning.hpp"
+#include "mechanics/coordinate_partitioning.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "mechanics/initial_conditions.hpp"
 
-namespace openmss::analysis {
+namespace openmss::mechanics {
 namespace {
-
-using mechanics::StateLayout;
 
 // Dependent positions are converged far below any integration tolerance (lengths of the
 // model's units): the recovered state must satisfy the constraints as tightly as the
@@ -68,14 +66,14 @@ Eigen::Vector4d conjugate(const Eigen::Vector4d& q) { return {q(0), -q(1), -q(2)
 
 }  // namespace
 
-CoordinatePartitioning::CoordinatePartitioning(const mechanics::MultibodySystem& system)
+CoordinatePartitioning::CoordinatePartitioning(const MultibodySystem& system)
     : system_(system), nb_(system.layout().bodies) {}
 
 bool CoordinatePartitioning::partition(const Eigen::VectorXd& y) {
   reference_ = y;
   zLast_ = Eigen::VectorXd::Zero(6 * nb_);
   std::vector<int> active;
-  const Eigen::MatrixXd c = mechanics::activeConstraintJacobian(system_, y.data(), &active);
+  const Eigen::MatrixXd c = activeConstraintJacobian(system_, y.data(), &active);
   rows_.clear();
   dependent_.clear();
   independent_.clear();
@@ -261,7 +259,7 @@ bool CoordinatePartitioning::expand(double t, const Eigen::VectorXd& x, Eigen::V
     y.segment<3>(l.body(b) + StateLayout::kW) = u.segment<3>(6 * b + 3);
   }
   // Accelerations and multipliers: the KKT solve of the initial-condition analysis.
-  if (!mechanics::solveAccelerations(system_, t, y, yp)) return false;
+  if (!solveAccelerations(system_, t, y, yp)) return false;
   if (!y.allFinite() || !yp.allFinite()) return false;
   if (xdot) {
     xdot->resize(2 * n);
@@ -279,4 +277,4 @@ bool CoordinatePartitioning::expand(double t, const Eigen::VectorXd& x, Eigen::V
   return true;
 }
 
-}  // namespace openmss::analysis
+}  // namespace openmss::mechanics

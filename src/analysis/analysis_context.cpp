@@ -1,0 +1,69 @@
+#include "analysis/analysis_context.hpp"
+
+#include <cstdio>
+
+#include "analysis/request_values.hpp"
+#include "mechanics/redundancy_check.hpp"
+
+namespace openmss::analysis {
+namespace {
+
+Diagnostic located(Severity severity, const model::Model& m, const RunOrigin* origin,
+                   std::string message, std::string hint) {
+  Diagnostic d;
+  d.severity = severity;
+  d.where = origin ? origin->where : SourceLocation{m.file, 0, 0};
+  d.subject = origin ? origin->subject : std::string();
+  d.message = std::move(message);
+  d.hint = std::move(hint);
+  return d;
+}
+
+}  // namespace
+
+std::string formatNumber(const char* format, double value) {
+  char buf[64];
+  std::snprintf(buf, sizeof buf, format, value);
+  return buf;
+}
+
+void AnalysisContext::error(const RunOrigin* origin, std::string message, std::string hint) const {
+  report.diagnostic(located(Severity::Error, model, origin, std::move(message), std::move(hint)));
+}
+
+void AnalysisContext::warning(const RunOrigin* origin, std::string message,
+                              std::string hint) const {
+  report.diagnostic(located(Severity::Warning, model, origin, std::move(message), std::move(hint)));
+}
+
+bool AnalysisContext::writeOutputStep(double t, const Eigen::VectorXd& y,
+                                      const Eigen::VectorXd& yp) const {
+  const model::Model& m = model;
+  if (const auto bad = mechanics::violatedRedundantEquation(system, t, y.data(),
+                                                            mechanics::redundantTolerance(m))) {
+    error(nullptr, mechanics::describeViolation(system, *bad, t),
+          "Make the duplicated constraints agree (coaxial hinges stay coaxial, a motion "
+          "must not drive the mechanism where a removed equation cannot follow), or "
+          "replace the redundant joint by a joint primitive. Outputs up to the last good "
+          "step are written.");
+    return false;
+  }
+  if (!m.output.reqsave) return true;
+  if (!report.openRequests()) return false;
+  std::vector<std::array<double, 6>> rows;
+  rows.reserve(m.requests.size());
+  constexpr double kDeg = 180.0 / 3.14159265358979323846;
+  for (const auto& r : m.requests) {
+    const auto c = requestColumns(system, r, t, y, yp);
+    std::array<double, 6> row = {c[1], c[2], c[3], c[5], c[6], c[7]};
+    // The request file holds displacement angles in degrees.
+    if (r.kind == model::Request::Kind::Displacement)
+      for (int k = 3; k < 6; ++k) row[k] *= kDeg;
+    rows.push_back(row);
+  }
+  report.writeRequests(t, rows);
+  ++state.summary.outputSteps;
+  return true;
+}
+
+}  // namespace openmss::analysis

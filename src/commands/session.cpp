@@ -1,0 +1,215 @@
+#include "commands/session.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+
+#include "analysis/initial_conditions_run.hpp"
+#include "analysis/linear_run.hpp"
+#include "analysis/model_summary.hpp"
+#include "analysis/statics_run.hpp"
+#include "analysis/transient_run.hpp"
+#include "commands/linear_command.hpp"
+#include "commands/simulate_command.hpp"
+#include "language/reader.hpp"
+#include "model/model_builder.hpp"
+#include "output/request_header.hpp"
+
+namespace openmss::commands {
+namespace {
+
+double steadySeconds() {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+Session::Session(SessionOptions options) : options_(std::move(options)) {}
+Session::~Session() = default;
+
+std::string Session::requestFilePath() const {
+  return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".req")).string();
+}
+std::string Session::messageFilePath() const {
+  return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".msg")).string();
+}
+
+const analysis::RunSummary& Session::summary() const {
+  static const analysis::RunSummary kNone;
+  return state_ ? state_->summary : kNone;
+}
+
+analysis::AnalysisContext Session::context() {
+  return analysis::AnalysisContext{*model_, *system_, *state_, *this};
+}
+
+void Session::diagnostic(const Diagnostic& d) {
+  diags_.add(d);
+  msg_.diagnostic(d);
+  if (options_.echoDiagnostics) std::fprintf(stderr, "%s\n", format(d).c_str());
+}
+
+void Session::reportAll(const Diagnostics& local) {
+  for (const auto& d : local.all()) diagnostic(d);
+}
+
+void Session::error(const language::Statement& s, const std::string& message,
+                    const std::string& hint) {
+  Diagnostic d;
+  d.where = s.where;
+  d.subject = s.subject();
+  d.message = message;
+  d.hint = hint;
+  diagnostic(d);
+}
+
+void Session::echoCommand(const std::string& text) { msg_.line(" command: " + text); }
+
+bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
+  prefix_ = outputPrefix;
+  std::filesystem::create_directories(options_.outputDirectory);
+  if (!msg_.open(messageFilePath())) {
+    Diagnostic d;
+    d.where = {path, 0, 0};
+    d.message = "cannot create the message file " + messageFilePath();
+    d.hint = "Check that the output directory exists and is writable.";
+    diagnostic(d);
+    return false;
+  }
+  msg_.line("OpenMSS " + std::string(OPENMSS_VERSION) +
+            " -- mechanical system simulation (ADAMS/Solver data sets)");
+  msg_.line("");
+  msg_.line(" command: FILE/MODEL=" + path + ", OUTPUT_PREFIX=" + prefix_);
+
+  language::Dataset dataset;
+  Diagnostics readDiags;
+  language::readDatasetFile(path, dataset, readDiags);
+  // A model loaded at the prompt after a run starts afresh; the old run state and system
+  // refer to the model about to be replaced.
+  state_.reset();
+  system_.reset();
+  model_ = std::make_unique<model::Model>();
+  model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
+  reportAll(readDiags);
+  msg_.line("");
+  msg_.line(" Model title: " + dataset.title);
+  // Only this data set's errors count: at the prompt, earlier commands may have failed.
+  if (readDiags.hasErrors()) {
+    msg_.line(" The data set has " + std::to_string(readDiags.errorCount()) +
+              " error(s); no analysis is possible.");
+    return false;
+  }
+  system_ = std::make_unique<mechanics::MultibodySystem>(*model_);
+  // Cumulative angles and DELAY histories of this model's run (docs/theory.md §11a).
+  state_ = std::make_unique<analysis::RunState>(*system_);
+  state_->outputPrefix = prefix_;
+  // Model summary and degree-of-freedom analysis at the data set's configuration.
+  const analysis::DegreeOfFreedomCount dof = analysis::countDegreesOfFreedom(*system_, state_->y);
+  state_->degreesOfFreedom = dof.degreesOfFreedom;
+  state_->grueblerCount = dof.gruebler;
+  for (const auto& l : analysis::modelSummaryLines(*system_, dof)) msg_.line(l);
+  for (int k : dof.removed)
+    context().warning(nullptr, "redundant constraint equation removed: " +
+                                   system_->constraints().describe(k, *model_) +
+                                   " (its reaction is carried by the equations kept)");
+  return true;
+}
+
+void Session::stop() {
+  stopped_ = true;
+  msg_.line("");
+  msg_.line(" Finished -----");
+  req_.close();
+}
+
+bool Session::execute(const language::Statement& c) {
+  if (c.name == "STOP") {
+    stop();
+    return true;
+  }
+  if (!system_) {
+    error(c, "no model is loaded", "Load a data set first (line 1 of the .acf, or FILE/MODEL=).");
+    return false;
+  }
+  if (c.name == "SIMULATE") return simulate(c);
+  if (c.name == "INTEGRATOR" || c.name == "GSTIFF" || c.name == "WSTIFF" || c.name == "DSTIFF")
+    return setIntegrator(c);
+  if (c.name == "OUTPUT") return setOutput(c);
+  if (c.name == "EQUILIBRIUM" || c.name == "IC") return setAnalysisParameters(c);
+  if (c.name == "LINEAR") return linear(c);
+  if (c.name == "DEBUG") return setDebug(c);
+  error(c, c.name + " is not supported yet by the solver",
+        "README.md lists the supported commands; remove this one or run it elsewhere.");
+  return false;
+}
+
+bool Session::simulate(const language::Statement& c) {
+  Diagnostics local;
+  const auto request = readSimulate(c, state_->t, local);
+  reportAll(local);
+  if (!request) return false;
+  const analysis::AnalysisContext run = context();
+  if (const auto* ic = std::get_if<analysis::InitialConditionsRun>(&*request))
+    return analysis::runInitialConditions(run, *ic);
+  if (const auto* statics = std::get_if<analysis::StaticsRun>(&*request))
+    return analysis::runStatics(run, *statics);
+  if (!analysis::runTransient(run, std::get<analysis::TransientRun>(*request))) return false;
+  if (state_->halted) stop();  // SENSOR/HALT ends the run as STOP does
+  return true;
+}
+
+bool Session::linear(const language::Statement& c) {
+  Diagnostics local;
+  const auto request = readLinear(c, *model_, options_.outputDirectory, prefix_, local);
+  reportAll(local);
+  if (!request) return false;
+  return analysis::runLinear(context(), *request);
+}
+
+bool Session::openRequests() {
+  if (req_.isOpen()) return true;
+  const model::Model& m = *model_;
+  bool unitsKnown = true;
+  const output::RequestFileHeader h = output::requestFileHeader(m, &unitsKnown);
+  if (!unitsKnown) {
+    Diagnostic d;
+    d.severity = Severity::Warning;
+    d.where = {m.file, 0, 0};
+    d.subject = "UNITS";
+    d.message = "the request-file units tag of " + m.units.description +
+                " is not known; the .req header says " + h.unitsToken +
+                " although the values are in the model's units";
+    d.hint = "Post-processors must be told the units of this run.";
+    diagnostic(d);
+  }
+  std::string err;
+  if (!req_.open(requestFilePath(), h, output::requestEntries(m), &err)) {
+    context().error(nullptr, "cannot write the request file: " + err, "");
+    return false;
+  }
+  return true;
+}
+
+void Session::writeRequests(double t, const std::vector<std::array<double, 6>>& rows) {
+  req_.writeStep(t, rows);
+}
+
+void Session::progressStart() { progressStart_ = progressLast_ = steadySeconds(); }
+
+void Session::progress(double t, double t0, double end, long steps) {
+  if (!options_.progress) return;
+  const double now = steadySeconds();
+  if (now - progressLast_ < 0.5 && t < end) return;
+  progressLast_ = now;
+  const double elapsed = now - progressStart_;
+  const double frac = (t - t0) / (end - t0);
+  const double eta = frac > 0 ? elapsed * (1.0 - frac) / frac : 0.0;
+  std::fprintf(stderr, "\r  t = %.5g / %.5g   steps %ld   ETA %.1f s   ", t, end, steps, eta);
+  std::fflush(stderr);
+}
+
+void Session::progressDone() {
+  if (options_.progress) std::fprintf(stderr, "\n");
+}
+
+}  // namespace openmss::commands

@@ -1,0 +1,88 @@
+#pragma once
+// A solver session: the loaded model, its run state, and the open output files, driven by
+// commands (from an .acf file, the command line, or a prompt). The session reads each command
+// into a typed request (simulate_command.hpp, linear_command.hpp) and hands it to the analysis
+// drivers (analysis/*_run.hpp); it writes what they report to <prefix>.msg and <prefix>.req
+// (docs/architecture.md).
+
+#include <memory>
+#include <string>
+
+#include "analysis/analysis_context.hpp"
+#include "analysis/run_report.hpp"
+#include "analysis/run_state.hpp"
+#include "common/diagnostics.hpp"
+#include "language/dataset.hpp"
+#include "mechanics/multibody_system.hpp"
+#include "model/model.hpp"
+#include "output/message_log.hpp"
+#include "output/request_file.hpp"
+
+namespace openmss::commands {
+
+struct SessionOptions {
+  std::string outputDirectory = ".";
+  bool progress = false;        // a progress line on the terminal (stderr)
+  bool echoDiagnostics = true;  // print diagnostics on stderr
+};
+
+class Session final : private analysis::RunReport {
+ public:
+  explicit Session(SessionOptions options);
+  ~Session() override;
+
+  // Reads, checks and loads a data set; opens <prefix>.msg (and .req on first output).
+  bool loadModel(const std::string& path, const std::string& outputPrefix);
+  // Executes one command; returns false when it failed (the reason is in the diagnostics).
+  bool execute(const language::Statement& command);
+  bool stopped() const { return stopped_; }
+
+  const Diagnostics& diagnostics() const { return diags_; }
+  const model::Model* model() const { return model_.get(); }
+  const analysis::RunSummary& summary() const;
+  std::string requestFilePath() const;
+  std::string messageFilePath() const;
+  int degreesOfFreedom() const { return state_ ? state_->degreesOfFreedom : 0; }
+  int grueblerDegreesOfFreedom() const { return state_ ? state_->grueblerCount : 0; }
+
+  // Message-file echo of a command, as ADAMS writes it.
+  void echoCommand(const std::string& text);
+
+ private:
+  analysis::AnalysisContext context();
+  bool simulate(const language::Statement& command);
+  bool linear(const language::Statement& command);
+  void stop();
+  // Settings commands (settings_commands.cpp): INTEGRATOR (and GSTIFF, WSTIFF, DSTIFF),
+  // OUTPUT, EQUILIBRIUM and IC, DEBUG. Each changes the model's settings for later analyses.
+  bool setIntegrator(const language::Statement& command);
+  bool setOutput(const language::Statement& command);
+  bool setAnalysisParameters(const language::Statement& command);
+  bool setDebug(const language::Statement& command);
+  // Reports (and keeps) diagnostics gathered while reading a command.
+  void reportAll(const Diagnostics& local);
+  void error(const language::Statement& s, const std::string& message, const std::string& hint);
+
+  // analysis::RunReport: the .msg, the diagnostics and the .req of the analyses.
+  void line(const std::string& text) override { msg_.line(text); }
+  void diagnostic(const Diagnostic& d) override;
+  bool openRequests() override;
+  bool requestsWritten() const override { return req_.isOpen(); }
+  void writeRequests(double t, const std::vector<std::array<double, 6>>& rows) override;
+  void progressStart() override;
+  void progress(double t, double t0, double end, long steps) override;
+  void progressDone() override;
+
+  SessionOptions options_;
+  Diagnostics diags_;
+  output::MessageLog msg_;
+  output::RequestFileWriter req_;
+  std::string prefix_;
+  std::unique_ptr<model::Model> model_;
+  std::unique_ptr<mechanics::MultibodySystem> system_;
+  std::unique_ptr<analysis::RunState> state_;
+  bool stopped_ = false;
+  double progressStart_ = 0.0, progressLast_ = 0.0;  // steady-clock seconds
+};
+
+}  // namespace openmss::commands

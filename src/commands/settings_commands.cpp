@@ -1,0 +1,103 @@
+// Session: the commands that change the model's settings for later analyses: INTEGRATOR (and
+// the FORTRAN-era GSTIFF, WSTIFF, DSTIFF), OUTPUT, EQUILIBRIUM and IC (docs/theory.md §7 and
+// "Statics"), DEBUG. A rejected command leaves the settings as they were.
+
+#include "analysis/analysis_context.hpp"
+#include "analysis/integrator_factory.hpp"
+#include "commands/session.hpp"
+#include "model/model_builder.hpp"
+#include "model/settings_arguments.hpp"
+
+namespace openmss::commands {
+namespace {
+
+using analysis::formatNumber;
+
+std::string patternText(const model::JacobianPattern& p) {
+  std::string s;
+  for (size_t k = 0; k < p.evaluate.size(); ++k)
+    s += std::string(k ? ":" : "") + (p.evaluate[k] ? "T" : "F");
+  return s;
+}
+
+std::string equilibriumListing(const model::EquilibriumSettings& e) {
+  return " EQUILIBRIUM: ALIMIT=" + formatNumber("%g", e.angleLimit) +
+         " rad, ERROR=" + formatNumber("%g", e.error) +
+         ", IMBALANCE=" + formatNumber("%g", e.imbalance) + ", MAXIT=" + std::to_string(e.maxit) +
+         ", PATTERN=" + patternText(e.pattern) + ", STABILITY=" + formatNumber("%g", e.stability) +
+         ", TLIMIT=" + formatNumber("%g", e.translationLimit);
+}
+
+std::string initialConditionListing(const model::InitialConditionSettings& i) {
+  return " IC: AERROR=" + formatNumber("%g", i.accelerationError) +
+         ", ALIMIT=" + formatNumber("%g", i.angleLimit) +
+         " rad, AMAXIT=" + std::to_string(i.accelerationMaxit) +
+         ", APATTERN=" + patternText(i.accelerationPattern) +
+         ", ERROR=" + formatNumber("%g", i.error) + ", MAXIT=" + std::to_string(i.maxit) +
+         ", PATTERN=" + patternText(i.pattern) +
+         ", TLIMIT=" + formatNumber("%g", i.translationLimit) +
+         ", VERROR=" + formatNumber("%g", i.velocityError);
+}
+
+}  // namespace
+
+bool Session::setOutput(const language::Statement& c) {
+  for (const auto& a : c.args) {
+    if (a.name == "NOSEPARATOR")
+      model_->output.noseparator = true;
+    else if (a.name == "SEPARATOR")
+      model_->output.noseparator = false;
+    else if (a.name == "REQSAVE")
+      model_->output.reqsave = true;
+    else {
+      Diagnostic d;
+      d.severity = Severity::Warning;
+      d.where = a.where;
+      d.subject = c.subject();
+      d.message = a.name + " is not supported yet and has no effect";
+      d.hint = "Remove it to silence this warning.";
+      diagnostic(d);
+    }
+  }
+  return true;
+}
+
+// The same arguments as the INTEGRATOR statement (model/analysis_settings.cpp).
+bool Session::setIntegrator(const language::Statement& c) {
+  Diagnostics local;
+  model::IntegratorSettings next = model_->integrator;
+  const bool ok = model::applyIntegratorArguments(
+      c, next, local, c.name == "INTEGRATOR" ? nullptr : c.name.c_str());
+  reportAll(local);
+  if (!ok) return false;
+  if (const auto why = analysis::integratorUnavailable(next)) {
+    error(c, *why, "Choose another integrator (docs/integrators.md).");
+    return false;
+  }
+  model_->integrator = next;
+  return true;
+}
+
+bool Session::setAnalysisParameters(const language::Statement& c) {
+  model::Model& m = *model_;
+  Diagnostics local;
+  const bool ok = c.name == "EQUILIBRIUM"
+                      ? model::applyEquilibriumArguments(c, m.equilibrium, local)
+                      : model::applyInitialConditionArguments(c, m.initialConditions, local);
+  reportAll(local);
+  if (c.has("LIST"))
+    msg_.line(c.name == "EQUILIBRIUM" ? equilibriumListing(m.equilibrium)
+                                      : initialConditionListing(m.initialConditions));
+  return ok;
+}
+
+bool Session::setDebug(const language::Statement& c) {
+  Diagnostics local;
+  model::applyDebugArguments(c, model_->debug, local);
+  reportAll(local);
+  if (c.has("LIST"))
+    msg_.line(std::string(" DEBUG: EPRINT ") + (model_->debug.eprint ? "on" : "off"));
+  return !local.hasErrors();
+}
+
+}  // namespace openmss::commands
