@@ -16,10 +16,14 @@
 namespace openmss::mechanics {
 namespace {
 
-// A pivot of S at most this fraction of its diagonal entry before elimination means the rows
-// of C are dependent to working precision (a singular configuration): the accelerations are
-// not determined and evaluate() says so instead of returning amplified round-off.
-constexpr double kPivotTolerance = 1e-12;
+// A pivot of S at most this fraction of its diagonal entry before elimination means the row
+// of C is a combination of the rows eliminated before it to working precision: a singular
+// configuration (the flat position of a four-bar, docs/theory.md §9d) or a dependency the
+// set-up analysis could not see. The row is then dropped from the solve, as the redundancy
+// analysis drops a redundant equation at the start: its multiplier is zero and the rows kept
+// carry its reaction. The accelerations stay determined (the mechanism's motion satisfies the
+// dropped row when it satisfies the others); only the split of the reaction is arbitrary.
+constexpr double kPivotTolerance = 1e-8;
 // Position and velocity projections: a Newton iteration on an older factorisation is kept while
 // it shrinks the violation at least this much per iteration, else S is formed afresh.
 constexpr double kContraction = 0.2;
@@ -171,6 +175,7 @@ struct IndexOneDynamics::Engine {
   std::vector<double> cDense, w, factorValues, sDiagonal, inverseDiagonal;
   std::vector<std::pair<int, int>> fillBlocks;  // (offset, entries) of blocks S has zero
   bool factored = false;
+  int droppedRows = 0;  // rows of C found dependent by the last factorisation
   std::vector<double> factorPositions;  // r and e of every body at the last factorisation
   // Tests run the kernels with the block size at run time too (the path of blocks of more
   // than 6 rows, which the bundled models do not have): 0 selects it in withSize.
@@ -353,6 +358,7 @@ bool IndexOneDynamics::Engine::factoredAt(const Eigen::VectorXd& y) const {
 
 bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::VectorXd& y) {
   factored = false;
+  droppedRows = 0;
   factorPositions.resize(static_cast<size_t>(StateLayout::kV * nb));
   for (int b = 0; b < nb; ++b)
     for (int i = 0; i < StateLayout::kV; ++i)
@@ -403,10 +409,14 @@ bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::Vector
       for (int k = 0; k < c; ++k) d -= l[c + n * k] * l[c + n * k];
       // The pivot is what is left of S_cc once the earlier rows are eliminated: a tiny
       // remainder means row c of C is (nearly) a combination of earlier rows.
-      if (!(d > kPivotTolerance * sDiagonal[blockStart[j] + c]) || !std::isfinite(d)) return false;
-      const double root = std::sqrt(d);
+      if (!std::isfinite(d)) return false;
+      const bool dependent = !(d > kPivotTolerance * sDiagonal[blockStart[j] + c]);
+      // A dependent row: inverse 0 zeroes its column of L below the pivot (here and in
+      // solveRight), so the row takes no part in the elimination and its multiplier solves to 0.
+      const double root = dependent ? 1.0 : std::sqrt(d);
       l[c + n * c] = root;
-      inverse[c] = 1.0 / root;
+      inverse[c] = dependent ? 0.0 : 1.0 / root;
+      droppedRows += dependent ? 1 : 0;
       for (int r = c + 1; r < n; ++r) {
         double v = l[r + n * c];
         for (int k = 0; k < c; ++k) v -= l[r + n * k] * l[c + n * k];

@@ -30,6 +30,32 @@ constexpr double kStalledChange = 1e-1;
 constexpr double kRoundOffUlps = 1000.0;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
+// Singular configurations (docs/integrators.md, "Singular configurations"): where the
+// constraint Jacobian loses rank (the flat position of a four-bar) the Newton matrix is singular
+// in the multipliers along its null space, and the LU turns round-off into huge multiplier
+// changes that wreck the velocities. After a corrector failure the constraint rows get the
+// diagonal -kRegularization (largest |entry| of the row, scaled matrix) for
+// kRegularizedSteps accepted steps: the multiplier's null-space component then stays bounded,
+// and the other directions see a relative change of about kRegularization in the matrix, which
+// slows the modified Newton iteration by that factor (the residual is exact, so the solution is
+// the same). Measured on the IFToMM A02 row of four-bars (tests/analysis/singular_passage_test.cpp).
+constexpr double kRegularization = 1e-8;
+// A modified Newton iteration on a stale matrix near a singular configuration converges in the
+// differential unknowns while the residual stays: the old multiplier columns absorb the
+// force-balance residual into multiplier changes that move nothing (EPRINT of A02 at ERROR
+// = 1e-8: steps accepted with 0.5 N m left in a moment balance, then a corrector failure). An
+// iteration declared converged on a stale matrix whose scaled residual shrank by less than
+// kResidualStall, while its first change was above kResidualCheckFloor of the tolerance (the
+// predictor was not already at round-off), is retried on a fresh matrix.
+constexpr double kResidualStall = 0.5;
+constexpr double kResidualCheckFloor = 1e-3;
+// ... and at the singular configuration itself the fresh matrix is nearly singular: the
+// iteration drives the residual to round-off and then keeps making changes of one size, the
+// round-off of the residual times the matrix's near-null directions (the N extra degrees of
+// freedom of the flat four-bar row). A stalled iteration whose scaled residual has fallen below
+// kResidualNoise of its first value has converged as far as the linear solves allow.
+constexpr double kResidualNoise = 1e-6;
+constexpr long kRegularizedSteps = 50;
 // Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
 // share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
 // as many at every further detection.
@@ -131,6 +157,34 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   jacobianCurrent_ = false;
   haveJacobian_ = false;
   consecutiveErrorFailures_ = 0;
+  regularizableMask_.resize(n);
+  for (int i = 0; i < n; ++i)
+    regularizableMask_(i) =
+        problem_.role(i) == DaeProblem::Role::Algebraic && problem_.rowScaleExponent(i) > 0
+            ? 1.0
+            : 0.0;
+  regularizedUntil_ = -1;
+}
+
+void BdfIntegrator::regularize() {
+  const int n = static_cast<int>(regularizableMask_.size());
+  rowMax_.setZero(n);
+  if (sparse_) {
+    for (int c = 0; c < sparseJac_.outerSize(); ++c)
+      for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
+        rowMax_(e.row()) = std::max(rowMax_(e.row()), std::abs(e.value()));
+    std::vector<Eigen::Triplet<double>> diagonal;
+    for (int i = 0; i < n; ++i)
+      if (regularizableMask_(i) != 0.0) diagonal.emplace_back(i, i, -kRegularization * rowMax_(i));
+    regularizationShift_.resize(n, n);
+    regularizationShift_.setFromTriplets(diagonal.begin(), diagonal.end());
+    regularizedJac_ = sparseJac_ + regularizationShift_;
+    regularizedJac_.makeCompressed();
+    return;
+  }
+  rowMax_ = jac_.cwiseAbs().rowwise().maxCoeff();
+  for (int i = 0; i < n; ++i)
+    if (regularizableMask_(i) != 0.0) jac_(i, i) -= kRegularization * rowMax_(i);
 }
 
 double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w) {
@@ -252,11 +306,19 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       for (int c = 0; c < sparseJac_.outerSize(); ++c)
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
-      klu_.factor(sparseJac_);
+      if (regularizing()) {
+        regularize();
+        kluRegularized_.factor(regularizedJac_);
+        solver_ = &kluRegularized_;
+      } else {
+        klu_.factor(sparseJac_);
+        solver_ = &klu_;
+      }
     } else {
       problem_.newtonMatrix(tNew, yPred_, ypNew_, cj, jac_);
       jac_.array().colwise() *= rowScale_.array();
       jac_.array().rowwise() *= colScale_.transpose().array();
+      if (regularizing()) regularize();
       dense_.factor(jac_);
     }
     cjJacobian_ = cj;
@@ -270,6 +332,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     // The rate is measured within the step: a rate carried over from the last step would let
     // a step stop after one iteration, which cost the 100-link chain 10x in tip error.
     double previous = 0.0, rate = 0.0;
+    double firstResidual = 0.0, lastResidual = 0.0, firstSize = 0.0;
     bool converged = false;
     for (int it = 0; it < settings_.maxit; ++it) {
       if (settings_.patternGiven && (it == 0 ? !jacobianCurrent_ : settings_.pattern[it % 10])) {
@@ -282,6 +345,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       problem_.residual(tNew, yNew_, ypNew_, g_);
       ++stats_.residualEvaluations;
       dy_ = rowScale_.cwiseProduct(g_);
+      lastResidual = dy_.cwiseAbs().maxCoeff();
+      if (it == 0) firstResidual = lastResidual;
       solver_->solve(dy_);
       // One pass over the unknowns after the solve: unscale the change, rescale it when the
       // Jacobian was formed at another cj (it approximates cj dG/dy'; DASSL's factor), apply
@@ -313,6 +378,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
                          lastWorstChange_});
       }
       if (it > 0) rate = size / std::max(previous, 1e-300);
+      if (it == 0) firstSize = size;
       previous = size;
       // Converged when the remaining change, about rate / (1 - rate) times the last one, is
       // small next to this step's own local error (the predictor-corrector difference the
@@ -334,12 +400,17 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       }
       // Stopped contracting far below the tolerance: round-off (index-3 velocities carry it
       // amplified by cj), converged.
-      if (it > 0 && rate >= 0.9 && (size <= kStalledChange || withinRoundOff(cj))) {
+      if (it > 0 && rate >= 0.9 &&
+          (size <= kStalledChange || withinRoundOff(cj) ||
+           lastResidual <= kResidualNoise * firstResidual)) {
         converged = true;
         break;
       }
       if (it > 1 && rate > 0.9) break;  // diverging
     }
+    if (converged && !jacobianCurrent_ && firstSize > kResidualCheckFloor &&
+        lastResidual > kResidualStall * firstResidual)
+      converged = false;  // stale matrix, residual left standing: retry on a fresh one
     if (converged) break;
     if (jacobianCurrent_ || attempt == 1) {
       noteWorst(g_, dy_);
@@ -405,6 +476,8 @@ bool BdfIntegrator::step(double tout) {
         ++stats_.newtonFailures;
         h_ = 0.25 * h;
         jacobianCurrent_ = false;
+        haveJacobian_ = haveJacobian_ && regularizing();  // the next attempt regularizes
+        regularizedUntil_ = stats_.steps + kRegularizedSteps;
       } else {
         ++stats_.rejectedSteps;
         ++consecutiveErrorFailures_;
