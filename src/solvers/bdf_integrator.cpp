@@ -31,31 +31,23 @@ constexpr double kRoundOffUlps = 1000.0;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
 // Singular configurations (docs/integrators.md, "Singular configurations"): where the
-// constraint Jacobian loses rank (the flat position of a four-bar) the Newton matrix is singular
-// in the multipliers along its null space, and the LU turns round-off into huge multiplier
-// changes that wreck the velocities. After a corrector failure the constraint rows get the
-// diagonal -kRegularization (largest |entry| of the row, scaled matrix) for
-// kRegularizedSteps accepted steps: the multiplier's null-space component then stays bounded,
-// and the other directions see a relative change of about kRegularization in the matrix, which
-// slows the modified Newton iteration by that factor (the residual is exact, so the solution is
-// the same). Measured on the IFToMM A02 row of four-bars (tests/analysis/singular_passage_test.cpp).
-constexpr double kRegularization = 1e-8;
-// A modified Newton iteration on a stale matrix near a singular configuration converges in the
-// differential unknowns while the residual stays: the old multiplier columns absorb the
-// force-balance residual into multiplier changes that move nothing (EPRINT of A02 at ERROR
-// = 1e-8: steps accepted with 0.5 N m left in a moment balance, then a corrector failure). An
-// iteration declared converged on a stale matrix whose scaled residual shrank by less than
-// kResidualStall, while its first change was above kResidualCheckFloor of the tolerance (the
-// predictor was not already at round-off), is retried on a fresh matrix.
+// constraint Jacobian loses rank (the flat position of a four-bar) the Newton matrix is
+// singular in the multipliers along the null space of C^T. A modified Newton iteration on a
+// stale matrix there converges in the differential unknowns while the residual stays: the old
+// multiplier columns absorb the force-balance residual into multiplier changes that move
+// nothing (EPRINT of A02 at ERROR = 1e-8: steps accepted with 0.5 N m left in a moment
+// balance, then a corrector failure). An iteration declared converged on a stale matrix whose
+// scaled residual shrank by less than kResidualStall, while its first change was above
+// kResidualCheckFloor of the tolerance (the predictor was not already at round-off), is
+// retried on a fresh matrix.
 constexpr double kResidualStall = 0.5;
 constexpr double kResidualCheckFloor = 1e-3;
-// ... and at the singular configuration itself the fresh matrix is nearly singular: the
-// iteration drives the residual to round-off and then keeps making changes of one size, the
-// round-off of the residual times the matrix's near-null directions (the N extra degrees of
-// freedom of the flat four-bar row). A stalled iteration whose scaled residual has fallen below
-// kResidualNoise of its first value has converged as far as the linear solves allow.
+// ... and on the fresh matrix, nearly singular itself, the iteration drives the residual to
+// round-off and then keeps making changes of one size: the residual's round-off along the
+// matrix's near-null directions (the N extra degrees of freedom of the flat four-bar row). A
+// stalled iteration whose scaled residual has fallen below kResidualNoise of its first value
+// has converged as far as the linear solves allow.
 constexpr double kResidualNoise = 1e-6;
-constexpr long kRegularizedSteps = 50;
 // Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
 // share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
 // as many at every further detection.
@@ -157,34 +149,6 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   jacobianCurrent_ = false;
   haveJacobian_ = false;
   consecutiveErrorFailures_ = 0;
-  regularizableMask_.resize(n);
-  for (int i = 0; i < n; ++i)
-    regularizableMask_(i) =
-        problem_.role(i) == DaeProblem::Role::Algebraic && problem_.rowScaleExponent(i) > 0
-            ? 1.0
-            : 0.0;
-  regularizedUntil_ = -1;
-}
-
-void BdfIntegrator::regularize() {
-  const int n = static_cast<int>(regularizableMask_.size());
-  rowMax_.setZero(n);
-  if (sparse_) {
-    for (int c = 0; c < sparseJac_.outerSize(); ++c)
-      for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
-        rowMax_(e.row()) = std::max(rowMax_(e.row()), std::abs(e.value()));
-    std::vector<Eigen::Triplet<double>> diagonal;
-    for (int i = 0; i < n; ++i)
-      if (regularizableMask_(i) != 0.0) diagonal.emplace_back(i, i, -kRegularization * rowMax_(i));
-    regularizationShift_.resize(n, n);
-    regularizationShift_.setFromTriplets(diagonal.begin(), diagonal.end());
-    regularizedJac_ = sparseJac_ + regularizationShift_;
-    regularizedJac_.makeCompressed();
-    return;
-  }
-  rowMax_ = jac_.cwiseAbs().rowwise().maxCoeff();
-  for (int i = 0; i < n; ++i)
-    if (regularizableMask_(i) != 0.0) jac_(i, i) -= kRegularization * rowMax_(i);
 }
 
 double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w) {
@@ -306,19 +270,11 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       for (int c = 0; c < sparseJac_.outerSize(); ++c)
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
-      if (regularizing()) {
-        regularize();
-        kluRegularized_.factor(regularizedJac_);
-        solver_ = &kluRegularized_;
-      } else {
-        klu_.factor(sparseJac_);
-        solver_ = &klu_;
-      }
+      klu_.factor(sparseJac_);
     } else {
       problem_.newtonMatrix(tNew, yPred_, ypNew_, cj, jac_);
       jac_.array().colwise() *= rowScale_.array();
       jac_.array().rowwise() *= colScale_.transpose().array();
-      if (regularizing()) regularize();
       dense_.factor(jac_);
     }
     cjJacobian_ = cj;
@@ -476,8 +432,6 @@ bool BdfIntegrator::step(double tout) {
         ++stats_.newtonFailures;
         h_ = 0.25 * h;
         jacobianCurrent_ = false;
-        haveJacobian_ = haveJacobian_ && regularizing();  // the next attempt regularizes
-        regularizedUntil_ = stats_.steps + kRegularizedSteps;
       } else {
         ++stats_.rejectedSteps;
         ++consecutiveErrorFailures_;

@@ -142,19 +142,6 @@ class BdfIntegrator final : public Integrator {
   double cjJacobian_ = 0.0;
   bool jacobianCurrent_ = false;
   bool haveJacobian_ = false;
-  // Rank-robust Newton solves at singular configurations (docs/integrators.md, "Singular
-  // configurations"): after a corrector failure the multiplier rows (algebraic rows scaled by
-  // cj^2 or cj: constraint equations) get a small negative diagonal for the next
-  // regularizedUntil_ - steps accepted steps. 1 on those rows, 0 elsewhere.
-  Eigen::VectorXd regularizableMask_;
-  long regularizedUntil_ = -1;
-  Eigen::VectorXd rowMax_;
-  Eigen::SparseMatrix<double> regularizedJac_, regularizationShift_;
-  KluLinearSolver kluRegularized_;
-  bool regularizing() const { return stats_.steps < regularizedUntil_; }
-  // -kRegularization * (largest |entry| of the row) on the regularizable rows of the scaled
-  // matrix, into regularizationShift_ (sparse) or directly onto jac_ (dense).
-  void regularize();
 
   // Work vectors (no allocation in the step loop).
   Eigen::VectorXd yNew_, ypNew_, yPred_, base_, g_, dy_, predictorDiff_;
