@@ -13,7 +13,8 @@
 //
 // N = 4 and 10 s stand in for the benchmark's N = 40 and 20 s (CI time): the mechanism turns
 // over and over and is flat (all rods on the ground line) every half turn, 10 times in 10 s (B0's y
-// changes sign at each); the count is asserted. The N = 40 table is in docs/validation.md (bench/a02_table.py).
+// changes sign at each); the count is asserted. The N = 40 table is in docs/validation.md
+// (bench/a02_table.py).
 
 #include <gtest/gtest.h>
 
@@ -93,8 +94,8 @@ std::vector<Sample> simulatedB0(const fs::path& req) {
       const std::string field = line.substr(1 + 13 * k, 13);
       char* end = nullptr;
       const double v = std::strtod(field.c_str(), &end);
-      numeric = end != field.c_str() && field.find_first_not_of(' ', end - field.c_str()) ==
-                                            std::string::npos;
+      numeric = end != field.c_str() &&
+                field.find_first_not_of(' ', end - field.c_str()) == std::string::npos;
       numbers.push_back(v);
     }
     if (!numeric) continue;
