@@ -368,9 +368,11 @@ Sizes: N = {', '.join(str(s) for s in sizes)}. Generated {time.strftime('%Y-%m-%
   so it is not chaotic and the tip state at 10 s is a meaningful accuracy measure; a chain
   released from horizontal would diverge between any two integrators within seconds.
 - **fourbar**: the IFToMM benchmark A02 "N four-bar mechanism" (N square windows of unit
-  1 kg rods, B0 moving at 1 m/s, gravity -y). It runs 0.5 s, before the flat singular
-  configuration (about t = 1 s), whose passage depends on the integrator rather than on
-  accuracy. OpenMSS only: MuJoCo closes loops with soft constraints, and the Simbody program
+  1 kg thin rods, B0 moving at 1 m/s, gravity 9.81 along -y). It runs 0.5 s, before the first
+  flat singular configuration (t = 0.72 s); the passages through it and the benchmark's 20 s
+  are measured against the exact solution in docs/validation.md ("IFToMM A02"). The numbers
+  below predate the benchmark's g = 9.81 and thin-rod inertia (issue 20; before: 9.80665 and
+  cylinders of radius 0.02 m). OpenMSS only: MuJoCo closes loops with soft constraints, and the Simbody program
   does not build loops yet.
 - **bushing**: N free 1 kg blocks each held to the previous one by a BUSHING and a
   translational SPRINGDAMPER (6N DOF, stiff), 1 s. OpenMSS only (no MuJoCo bushing element;

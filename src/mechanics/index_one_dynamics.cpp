@@ -16,10 +16,24 @@
 namespace openmss::mechanics {
 namespace {
 
-// A pivot of S at most this fraction of its diagonal entry before elimination means the rows
-// of C are dependent to working precision (a singular configuration): the accelerations are
-// not determined and evaluate() says so instead of returning amplified round-off.
-constexpr double kPivotTolerance = 1e-12;
+// A pivot of S at most this fraction of its diagonal entry before elimination means the row
+// of C is a combination of the rows eliminated before it to working precision: a singular
+// configuration (the flat position of a four-bar, docs/theory.md §9d) or a dependency the
+// set-up analysis could not see. The row is then dropped from the solve, as the redundancy
+// analysis drops a redundant equation at the start: its multiplier is zero and the rows kept
+// carry its reaction. The accelerations stay determined (the mechanism's motion satisfies the
+// dropped row when it satisfies the others); only the split of the reaction is arbitrary.
+//
+// "Diagonal entry" is S_cc, except when its two parts, translational (|C_t|^2 / m) and
+// rotational (C_r J^-1 C_r^T), differ by more than kPartRatio: then the smaller part. With very
+// unequal inertias (the DAE test-set pendulum, a unit point mass with inertia 1e-10) S_cc is
+// dominated by the rotational part and a legitimate pivot of a translational row is 1e-10 of
+// it (measured: the MERSON pendulum tests failed with S_cc alone), while at a singular
+// configuration the pivot is small against both parts. Any pivot at most kRoundOffPivot of
+// S_cc is dependent to working precision whatever the parts.
+constexpr double kPivotTolerance = 1e-8;
+constexpr double kRoundOffPivot = 1e-12;
+constexpr double kPartRatio = 1e6;
 // Position and velocity projections: a Newton iteration on an older factorisation is kept while
 // it shrinks the violation at least this much per iteration, else S is formed afresh.
 constexpr double kContraction = 0.2;
@@ -169,8 +183,11 @@ struct IndexOneDynamics::Engine {
   std::vector<int> updateStart;  // updates of column j: updateStart[j] .. updateStart[j + 1] - 1
   std::vector<Update> updates;
   std::vector<double> cDense, w, factorValues, sDiagonal, inverseDiagonal;
+  // Per row of C: the translational and rotational parts of S's diagonal (see kPivotTolerance).
+  std::vector<double> translationalPart, rotationalPart;
   std::vector<std::pair<int, int>> fillBlocks;  // (offset, entries) of blocks S has zero
   bool factored = false;
+  int droppedRows = 0;  // rows of C found dependent by the last factorisation
   std::vector<double> factorPositions;  // r and e of every body at the last factorisation
   // Tests run the kernels with the block size at run time too (the path of blocks of more
   // than 6 rows, which the bundled models do not have): 0 selects it in withSize.
@@ -334,6 +351,8 @@ IndexOneDynamics::Engine::Engine(const MultibodySystem& sys)
   }
   sDiagonal.assign(m, 0.0);
   inverseDiagonal.assign(m, 0.0);
+  translationalPart.assign(m, 0.0);
+  rotationalPart.assign(m, 0.0);
   values.assign(cols.size(), 0.0);
   gamma.assign(m, 0.0);
   phi.assign(m, 0.0);
@@ -353,6 +372,7 @@ bool IndexOneDynamics::Engine::factoredAt(const Eigen::VectorXd& y) const {
 
 bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::VectorXd& y) {
   factored = false;
+  droppedRows = 0;
   factorPositions.resize(static_cast<size_t>(StateLayout::kV * nb));
   for (int b = 0; b < nb; ++b)
     for (int i = 0; i < StateLayout::kV; ++i)
@@ -362,6 +382,8 @@ bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::Vector
     std::copy_n(entries + 6 * s, 6, cDense.data() + segmentTarget[s]);
   auto size = [&](int j) { return blockStart[j + 1] - blockStart[j]; };
   // W = C M^-1 per incidence: translations scaled by 1/m, rotations times J^-1 (symmetric).
+  std::fill(translationalPart.begin(), translationalPart.end(), 0.0);
+  std::fill(rotationalPart.begin(), rotationalPart.end(), 0.0);
   for (const Incidence& inc : incidences) {
     const int n = inc.rows;
     const double im = inverseMass[inc.body];
@@ -374,6 +396,9 @@ bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::Vector
       for (int d = 0; d < 3; ++d) wr[d] = cr[d] * im;
       for (int d = 0; d < 3; ++d)
         wr[3 + d] = cr[3] * ji(0, d) + cr[4] * ji(1, d) + cr[5] * ji(2, d);
+      const size_t row = static_cast<size_t>(blockStart[inc.block] + r);
+      translationalPart[row] += cr[0] * wr[0] + cr[1] * wr[1] + cr[2] * wr[2];
+      rotationalPart[row] += cr[3] * wr[3] + cr[4] * wr[4] + cr[5] * wr[5];
     }
   }
   for (const auto& [offset, count] : fillBlocks)
@@ -403,10 +428,21 @@ bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::Vector
       for (int k = 0; k < c; ++k) d -= l[c + n * k] * l[c + n * k];
       // The pivot is what is left of S_cc once the earlier rows are eliminated: a tiny
       // remainder means row c of C is (nearly) a combination of earlier rows.
-      if (!(d > kPivotTolerance * sDiagonal[blockStart[j] + c]) || !std::isfinite(d)) return false;
-      const double root = std::sqrt(d);
+      if (!std::isfinite(d)) return false;
+      const size_t row = static_cast<size_t>(blockStart[j] + c);
+      const double t = translationalPart[row], q = rotationalPart[row];
+      const double lo = std::min(t, q), hi = std::max(t, q);
+      // (A part within round-off of zero, lo <= kRoundOffPivot hi, is no part.)
+      const double part =
+          lo > kRoundOffPivot * hi && hi > kPartRatio * lo ? lo : sDiagonal[row];
+      const bool dependent = !(d > kRoundOffPivot * sDiagonal[row]) ||
+                             !(d > kPivotTolerance * part);
+      // A dependent row: inverse 0 zeroes its column of L below the pivot (here and in
+      // solveRight), so the row takes no part in the elimination and its multiplier solves to 0.
+      const double root = dependent ? 1.0 : std::sqrt(d);
       l[c + n * c] = root;
-      inverse[c] = 1.0 / root;
+      inverse[c] = dependent ? 0.0 : 1.0 / root;
+      droppedRows += dependent ? 1 : 0;
       for (int r = c + 1; r < n; ++r) {
         double v = l[r + n * c];
         for (int k = 0; k < c; ++k) v -= l[r + n * k] * l[c + n * k];

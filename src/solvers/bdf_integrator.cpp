@@ -30,6 +30,24 @@ constexpr double kStalledChange = 1e-1;
 constexpr double kRoundOffUlps = 1000.0;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
+// Singular configurations (docs/integrators.md, "Singular configurations"): where the
+// constraint Jacobian loses rank (the flat position of a four-bar) the Newton matrix is
+// singular in the multipliers along the null space of C^T. A modified Newton iteration on a
+// stale matrix there converges in the differential unknowns while the residual stays: the old
+// multiplier columns absorb the force-balance residual into multiplier changes that move
+// nothing (EPRINT of A02 at ERROR = 1e-8: steps accepted with 0.5 N m left in a moment
+// balance, then a corrector failure). An iteration declared converged on a stale matrix whose
+// scaled residual shrank by less than kResidualStall, while its first change was above
+// kResidualCheckFloor of the tolerance (the predictor was not already at round-off), is
+// retried on a fresh matrix.
+constexpr double kResidualStall = 0.5;
+constexpr double kResidualCheckFloor = 1e-3;
+// ... and on the fresh matrix, nearly singular itself, the iteration drives the residual to
+// round-off and then keeps making changes of one size: the residual's round-off along the
+// matrix's near-null directions (the N extra degrees of freedom of the flat four-bar row). A
+// stalled iteration whose scaled residual has fallen below kResidualNoise of its first value
+// has converged as far as the linear solves allow.
+constexpr double kResidualNoise = 1e-6;
 // Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
 // share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
 // as many at every further detection.
@@ -270,6 +288,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     // The rate is measured within the step: a rate carried over from the last step would let
     // a step stop after one iteration, which cost the 100-link chain 10x in tip error.
     double previous = 0.0, rate = 0.0;
+    double firstResidual = 0.0, lastResidual = 0.0, firstSize = 0.0;
     bool converged = false;
     for (int it = 0; it < settings_.maxit; ++it) {
       if (settings_.patternGiven && (it == 0 ? !jacobianCurrent_ : settings_.pattern[it % 10])) {
@@ -282,6 +301,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       problem_.residual(tNew, yNew_, ypNew_, g_);
       ++stats_.residualEvaluations;
       dy_ = rowScale_.cwiseProduct(g_);
+      lastResidual = dy_.cwiseAbs().maxCoeff();
+      if (it == 0) firstResidual = lastResidual;
       solver_->solve(dy_);
       // One pass over the unknowns after the solve: unscale the change, rescale it when the
       // Jacobian was formed at another cj (it approximates cj dG/dy'; DASSL's factor), apply
@@ -313,6 +334,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
                          lastWorstChange_});
       }
       if (it > 0) rate = size / std::max(previous, 1e-300);
+      if (it == 0) firstSize = size;
       previous = size;
       // Converged when the remaining change, about rate / (1 - rate) times the last one, is
       // small next to this step's own local error (the predictor-corrector difference the
@@ -334,12 +356,17 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       }
       // Stopped contracting far below the tolerance: round-off (index-3 velocities carry it
       // amplified by cj), converged.
-      if (it > 0 && rate >= 0.9 && (size <= kStalledChange || withinRoundOff(cj))) {
+      if (it > 0 && rate >= 0.9 &&
+          (size <= kStalledChange || withinRoundOff(cj) ||
+           lastResidual <= kResidualNoise * firstResidual)) {
         converged = true;
         break;
       }
       if (it > 1 && rate > 0.9) break;  // diverging
     }
+    if (converged && !jacobianCurrent_ && firstSize > kResidualCheckFloor &&
+        lastResidual > kResidualStall * firstResidual)
+      converged = false;  // stale matrix, residual left standing: retry on a fresh one
     if (converged) break;
     if (jacobianCurrent_ || attempt == 1) {
       noteWorst(g_, dy_);

@@ -10,6 +10,9 @@ using Role = DaeProblem::Role;
 
 // Corrector convergence, in units of the error tolerance (as the BDF family's).
 constexpr double kTightChange = 1e-9;
+// A stalled iteration whose scaled residual is below this share of its first value has
+// converged as far as the linear solves allow (singular configurations, BdfIntegrator).
+constexpr double kResidualNoise = 1e-6;
 
 int roleCode(Role r) { return static_cast<int>(r); }
 
@@ -138,6 +141,7 @@ bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm)
   for (int attempt = 0; attempt < 2; ++attempt) {
     yNew_ = yPred_;
     double previous = 0.0, rate = 0.0;
+    double firstResidual = 0.0, lastResidual = 0.0;
     bool converged = false;
     for (int it = 0; it < settings_.maxit; ++it) {
       ypNew_ = ypPred_ + slope_.cwiseProduct(yNew_ - yPred_);
@@ -159,7 +163,10 @@ bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm)
           if (role_(i) == roleCode(Role::Velocity))
             g_(i) = (1.0 + alpha) * g_(i) - alpha * gOld_(i);
       }
-      dy_ = colScale_.cwiseProduct(lu_.solve(rowScale_.cwiseProduct(g_)));
+      dy_ = rowScale_.cwiseProduct(g_);
+      lastResidual = dy_.cwiseAbs().maxCoeff();
+      if (it == 0) firstResidual = lastResidual;
+      dy_ = colScale_.cwiseProduct(lu_.solve(dy_));
       yNew_ -= dy_;
       const double size = weightedNorm(dy_, yNew_, false);
       noteWorst(g_, dy_);
@@ -173,7 +180,12 @@ bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm)
         converged = true;
         break;
       }
-      if (it > 0 && rate >= 0.9 && size <= 1e-3) {  // stalled at round-off
+      // Stalled at round-off: changes far below the tolerance, or (at a singular
+      // configuration, where the matrix is nearly singular along the mechanism's extra degrees
+      // of freedom) a residual already below kResidualNoise of its first value, as in
+      // BdfIntegrator (docs/integrators.md, "Singular configurations").
+      if (it > 0 && rate >= 0.9 &&
+          (size <= 1e-3 || lastResidual <= kResidualNoise * firstResidual)) {
         converged = true;
         break;
       }
