@@ -2,17 +2,12 @@
 
 #include <cmath>
 
-#include "commands/command_arguments.hpp"
+#include "model/statement_arguments.hpp"
 
 namespace openmss::commands {
 namespace {
 
 analysis::RunOrigin originOf(const language::Statement& c) { return {c.where, c.subject()}; }
-
-void error(Diagnostics& diags, const language::Statement& c, const std::string& message,
-           const std::string& hint) {
-  diags.error(c.where, c.subject(), message, hint);
-}
 
 std::string formatTime(double t) {
   char buf[64];
@@ -21,22 +16,22 @@ std::string formatTime(double t) {
 }
 
 // The output count of END with STEPS= or DTOUT= (0 when neither gives one).
-long outputCount(const language::Statement& c, double now, double end) {
-  const auto steps = number(c, "STEPS");
-  const auto dtout = number(c, "DTOUT");
+long outputCount(const model::StatementArguments& args, double now, double end) {
+  const auto steps = args.firstNumber("STEPS");
+  const auto dtout = args.firstNumber("DTOUT");
   if (steps && *steps >= 1) return static_cast<long>(std::llround(*steps));
   if (dtout && *dtout > 0)
     return std::max(1L, static_cast<long>(std::llround((end - now) / *dtout)));
   return 0;
 }
 
-std::optional<SimulateRequest> readInitialConditions(const language::Statement& c,
-                                                     Diagnostics& diags) {
+std::optional<SimulateRequest> readInitialConditions(model::StatementArguments& args) {
+  const language::Statement& c = args.statement();
   for (const char* bad : {"END", "DURATION", "STEPS", "DTOUT"})
     if (c.has(bad)) {
-      error(diags, c, std::string(bad) + " has no meaning for SIMULATE/INITIAL_CONDITIONS",
-            "Remove it: the initial-condition analysis writes one output step at the current "
-            "time.");
+      args.error(c.where, std::string(bad) + " has no meaning for SIMULATE/INITIAL_CONDITIONS",
+                 "Remove it: the initial-condition analysis writes one output step at the current "
+                 "time.");
       return std::nullopt;
     }
   analysis::InitialConditionsRun r;
@@ -50,54 +45,55 @@ std::optional<SimulateRequest> readInitialConditions(const language::Statement& 
 
 // SIMULATE/STATICS [, END | DURATION, STEPS | DTOUT]: one equilibrium at the current time,
 // or a quasi-static sequence of equilibria at the output times.
-std::optional<SimulateRequest> readStatics(const language::Statement& c, double now,
-                                           Diagnostics& diags) {
+std::optional<SimulateRequest> readStatics(model::StatementArguments& args, double now) {
+  const language::Statement& c = args.statement();
   analysis::StaticsRun r;
   r.origin = originOf(c);
-  auto end = number(c, "END");
-  if (auto duration = number(c, "DURATION"); !end && duration) end = now + *duration;
+  auto end = args.firstNumber("END");
+  if (auto duration = args.firstNumber("DURATION"); !end && duration) end = now + *duration;
   if (end) {
     if (*end <= now) {
-      error(diags, c,
-            "END (or DURATION) must give a time after the current time " + formatTime(now),
-            "Add END=<time> greater than the current time, or leave END out for one static "
-            "equilibrium.");
+      args.error(c.where,
+                 "END (or DURATION) must give a time after the current time " + formatTime(now),
+                 "Add END=<time> greater than the current time, or leave END out for one static "
+                 "equilibrium.");
       return std::nullopt;
     }
-    r.outputSteps = outputCount(c, now, *end);
+    r.outputSteps = outputCount(args, now, *end);
     if (r.outputSteps == 0) {
-      error(diags, c, "a quasi-static run needs the output step",
-            "Add STEPS=<count> or DTOUT=<interval>.");
+      args.error(c.where, "a quasi-static run needs the output step",
+                 "Add STEPS=<count> or DTOUT=<interval>.");
       return std::nullopt;
     }
   } else if (c.has("STEPS") || c.has("DTOUT")) {
-    error(diags, c, "STEPS and DTOUT need END (or DURATION) in a static analysis",
-          "Add END=<time> for a quasi-static run, or remove STEPS/DTOUT for one equilibrium.");
+    args.error(c.where, "STEPS and DTOUT need END (or DURATION) in a static analysis",
+               "Add END=<time> for a quasi-static run, or remove STEPS/DTOUT for one equilibrium.");
     return std::nullopt;
   }
   r.end = end;
   return r;
 }
 
-std::optional<SimulateRequest> readTransient(const language::Statement& c, double now,
-                                             Diagnostics& diags) {
+std::optional<SimulateRequest> readTransient(model::StatementArguments& args, double now) {
+  const language::Statement& c = args.statement();
   analysis::TransientRun r;
   r.kind = c.has("KINEMATICS") ? analysis::TransientKind::Kinematics
            : c.has("DYNAMICS") ? analysis::TransientKind::Dynamics
                                : analysis::TransientKind::Transient;
   r.origin = originOf(c);
-  auto end = number(c, "END");
-  const auto duration = number(c, "DURATION");
+  auto end = args.firstNumber("END");
+  const auto duration = args.firstNumber("DURATION");
   if (!end && duration) end = now + *duration;
   if (!end || *end <= now) {
-    error(diags, c, "END (or DURATION) must give a time after the current time " + formatTime(now),
-          "Add END=<time> greater than the current time.");
+    args.error(c.where,
+               "END (or DURATION) must give a time after the current time " + formatTime(now),
+               "Add END=<time> greater than the current time.");
     return std::nullopt;
   }
   r.end = *end;
-  r.outputSteps = outputCount(c, now, *end);
+  r.outputSteps = outputCount(args, now, *end);
   if (r.outputSteps == 0) {
-    error(diags, c, "the output step is missing", "Add STEPS=<count> or DTOUT=<interval>.");
+    args.error(c.where, "the output step is missing", "Add STEPS=<count> or DTOUT=<interval>.");
     return std::nullopt;
   }
   return r;
@@ -107,22 +103,24 @@ std::optional<SimulateRequest> readTransient(const language::Statement& c, doubl
 
 std::optional<SimulateRequest> readSimulate(const language::Statement& c, double now,
                                             Diagnostics& diags) {
+  model::StatementArguments args(c, diags);
   int kinds = 0;
   for (const char* k : {"DYNAMICS", "KINEMATICS", "STATICS", "TRANSIENT", "INITIAL_CONDITIONS"})
     kinds += c.has(k) ? 1 : 0;
   if (kinds == 0) {
-    error(diags, c, "the kind of simulation is missing",
-          "Write SIMULATE/TRANSIENT (or DYNAMICS, KINEMATICS), END=..., DTOUT=... or STEPS=....");
+    args.error(
+        c.where, "the kind of simulation is missing",
+        "Write SIMULATE/TRANSIENT (or DYNAMICS, KINEMATICS), END=..., DTOUT=... or STEPS=....");
     return std::nullopt;
   }
   if (kinds > 1) {
-    error(diags, c, "SIMULATE takes one kind of analysis",
-          "Write one of DYNAMICS, KINEMATICS, STATICS, TRANSIENT, INITIAL_CONDITIONS.");
+    args.error(c.where, "SIMULATE takes one kind of analysis",
+               "Write one of DYNAMICS, KINEMATICS, STATICS, TRANSIENT, INITIAL_CONDITIONS.");
     return std::nullopt;
   }
-  if (c.has("INITIAL_CONDITIONS")) return readInitialConditions(c, diags);
-  if (c.has("STATICS")) return readStatics(c, now, diags);
-  return readTransient(c, now, diags);
+  if (c.has("INITIAL_CONDITIONS")) return readInitialConditions(args);
+  if (c.has("STATICS")) return readStatics(args, now);
+  return readTransient(args, now);
 }
 
 }  // namespace openmss::commands

@@ -1,8 +1,7 @@
 #pragma once
 // Typed reading of one statement's (or command's) arguments, with located diagnostics: the one
-// argument reader of the model builders and the analysis settings (EQUILIBRIUM, IC, INTEGRATOR).
-// The command interpreter's own helpers (number/numberOf in analysis/session*.cpp) are
-// firstNumber and error here, and are meant to be replaced by them.
+// argument reader of the model builders, the analysis settings (EQUILIBRIUM, IC, INTEGRATOR) and
+// the command readers of src/commands (SIMULATE reads END=, STEPS=, ... through firstNumber).
 //
 // The language reader has already checked every argument against the schema (value kinds and
 // counts, required arguments of data-set statements; docs/language.md). These reads guard the
