@@ -83,7 +83,7 @@ struct AbamIntegrator::Engine {
 };
 
 AbamIntegrator::AbamIntegrator(const mechanics::MultibodySystem& system,
-                               const AbamSettings& settings)
+                               const solvers::MultistepSettings& settings)
     : system_(system), settings_(settings), partitioning_(system) {}
 
 AbamIntegrator::~AbamIntegrator() = default;

@@ -19,16 +19,16 @@
 #include "mechanics/multibody_system.hpp"
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/integrator.hpp"
+#include "solvers/multistep_settings.hpp"
 
 namespace openmss::analysis {
 
-// ERROR (relative and absolute, on independent positions and velocities), HINIT, HMAX, HMIN,
-// KMAX (<= 12, Adams), MAXIT: as for GSTIFF.
-using AbamSettings = solvers::BdfSettings;
-
+// Settings: solvers::MultistepSettings; ERROR is relative and absolute, on independent positions
+// and velocities; KMAX <= 12 (Adams).
 class AbamIntegrator final : public solvers::Integrator {
  public:
-  AbamIntegrator(const mechanics::MultibodySystem& system, const AbamSettings& settings);
+  AbamIntegrator(const mechanics::MultibodySystem& system,
+                 const solvers::MultistepSettings& settings);
   ~AbamIntegrator() override;
   AbamIntegrator(const AbamIntegrator&) = delete;
   AbamIntegrator& operator=(const AbamIntegrator&) = delete;
@@ -64,7 +64,7 @@ class AbamIntegrator final : public solvers::Integrator {
   void recordFailure(const std::string& reason, double h);
 
   const mechanics::MultibodySystem& system_;
-  AbamSettings settings_;
+  solvers::MultistepSettings settings_;
   mechanics::CoordinatePartitioning partitioning_;
   std::unique_ptr<Engine> engine_;
   solvers::IntegratorStatistics stats_, earlier_;  // earlier_: solvers before the last restart

@@ -240,7 +240,7 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
     case IntegratorType::Gstiff:
     case IntegratorType::Wstiff:
     case IntegratorType::Dstiff: {
-      solvers::BdfSettings s;
+      solvers::MultistepSettings s;
       // ERROR is the accuracy asked of the run; the BDF's local test bounds each step's error
       // in the weights ERROR (1 + |y|), up to 2 ERROR per step on unit-size coordinates, and
       // the steps' errors accumulate (the DAE-test-set pendulum: 19 steps at ERROR = 1e-3 end
@@ -281,7 +281,7 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       break;
     }
     case IntegratorType::Abam: {
-      AbamSettings s;
+      solvers::MultistepSettings s;
       s.error = p.error;
       s.hinit = p.hinit;
       s.hmax = p.hmax;

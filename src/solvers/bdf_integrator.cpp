@@ -98,7 +98,7 @@ void bdfWeights(const double* nodes, int n, double* a) {
 
 }  // namespace
 
-BdfIntegrator::BdfIntegrator(DaeProblem& problem, const BdfSettings& settings)
+BdfIntegrator::BdfIntegrator(DaeProblem& problem, const MultistepSettings& settings)
     : problem_(problem), settings_(settings) {
   settings_.kmax = std::clamp(settings_.kmax, 1, 6);
 }

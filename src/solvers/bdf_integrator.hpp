@@ -15,27 +15,9 @@
 #include "solvers/dense_linear_solver.hpp"
 #include "solvers/klu_linear_solver.hpp"
 #include "solvers/integrator.hpp"
+#include "solvers/multistep_settings.hpp"
 
 namespace openmss::solvers {
-
-struct BdfSettings {
-  double error = 1e-3;  // ERROR: local error tolerance (relative and absolute)
-  double hinit = 0.0;   // HINIT: first step (0: chosen by the caller)
-  double hmax = std::numeric_limits<double>::infinity();  // HMAX
-  double hmin = 0.0;    // HMIN: smallest step before the run fails
-  int kmax = 6;         // KMAX: highest order
-  int maxit = 10;       // MAXIT: corrector iterations per attempt
-  // Corrector coefficients (docs/integrators.md, "GSTIFF and WSTIFF"). Variable: the BDF
-  // through the actual past times (WSTIFF). Fixed: the constant-step BDF through the past
-  // solution interpolated to an equally spaced grid at the new step (GSTIFF's Nordsieck
-  // rescaling); a step change then costs an interpolation error.
-  bool fixedCoefficients = false;
-  // PATTERN: when set, the Jacobian is also re-formed at every corrector iteration j whose
-  // flag pattern[j % 10] is true, and always at the first (docs/integrators.md, "Defaults"). Unset: it
-  // is re-formed only when cj has drifted or the corrector fails.
-  bool patternGiven = false;
-  bool pattern[10] = {true, false, false, false, true, false, false, false, true, false};
-};
 
 // The names the BDF family used before the common interface (solvers/integrator.hpp).
 using BdfStatistics = IntegratorStatistics;
@@ -45,7 +27,7 @@ using BdfStepInfo = StepInfo;
 
 class BdfIntegrator final : public Integrator {
  public:
-  BdfIntegrator(DaeProblem& problem, const BdfSettings& settings);
+  BdfIntegrator(DaeProblem& problem, const MultistepSettings& settings);
 
   void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
   bool step(double tout) override;
@@ -92,7 +74,7 @@ class BdfIntegrator final : public Integrator {
   void updateDivided();
 
   DaeProblem& problem_;
-  BdfSettings settings_;
+  MultistepSettings settings_;
   BdfStatistics stats_;
   BdfFailure failure_;
 

@@ -25,7 +25,7 @@ struct HhtSettings {
   double alpha = -0.3;        // ALPHA in [-1/3, 0]
   double beta = 0.4225;       // (1 - alpha)^2 / 4 for HHT
   double gamma = 0.8;         // (1 - 2 alpha) / 2 for HHT
-  bool patternGiven = false;  // PATTERN, as in BdfSettings
+  bool patternGiven = false;  // PATTERN, as in MultistepSettings
   bool pattern[10] = {true, false, false, false, true, false, false, false, true, false};
 
   // HHT's beta and gamma for a given alpha (second order, unconditionally stable).

@@ -168,7 +168,7 @@ struct IdaIntegrator::Engine {
   }
 };
 
-IdaIntegrator::IdaIntegrator(DaeProblem& problem, const IdaSettings& settings)
+IdaIntegrator::IdaIntegrator(DaeProblem& problem, const MultistepSettings& settings)
     : problem_(problem), settings_(settings) {}
 
 IdaIntegrator::~IdaIntegrator() = default;

@@ -13,11 +13,9 @@
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/dae_problem.hpp"
 #include "solvers/integrator.hpp"
+#include "solvers/multistep_settings.hpp"
 
 namespace openmss::solvers {
-
-// ERROR, HINIT, HMAX, HMIN, KMAX, MAXIT mean what they mean for GSTIFF (KMAX <= 5 for IDA).
-using IdaSettings = BdfSettings;
 
 // Why IDA stopped (its return codes, translated).
 enum class IdaOutcome {
@@ -34,7 +32,7 @@ enum class IdaOutcome {
 
 class IdaIntegrator final : public Integrator {
  public:
-  IdaIntegrator(DaeProblem& problem, const IdaSettings& settings);
+  IdaIntegrator(DaeProblem& problem, const MultistepSettings& settings);
   ~IdaIntegrator() override;
   IdaIntegrator(const IdaIntegrator&) = delete;
   IdaIntegrator& operator=(const IdaIntegrator&) = delete;
@@ -59,7 +57,7 @@ class IdaIntegrator final : public Integrator {
   void recordFailure(int flag);
 
   DaeProblem& problem_;
-  IdaSettings settings_;
+  MultistepSettings settings_;
   std::unique_ptr<Engine> engine_;
   IntegratorStatistics stats_;
   IntegratorFailure failure_;

@@ -53,7 +53,7 @@ Outcome integrate(double error, double hmax) {
   mechanics::solveVelocities(s, 0.0, y);
   EXPECT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
   MultibodyDae dae(s);
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = error;
   settings.hmax = hmax;
   settings.hinit = 1e-4;
@@ -71,7 +71,7 @@ TEST(DaePendulum, MatchesTheTestSetAtTightTolerance) {
   EXPECT_NEAR(o.y, kY1, 1e-6);
 }
 
-// BdfSettings::error bounds the local error of each step; the global error at t = 1 is their
+// MultistepSettings::error bounds the local error of each step; the global error at t = 1 is their
 // accumulation over the ~20 steps taken, measured at 2.2e-3. Bounded here by 5 x ERROR. A run's
 // ERROR (INTEGRATOR/ERROR=) goes through the factory, which holds each step to a tenth of it:
 // PendulumByIntegrator below checks the global error against ERROR itself.

@@ -53,7 +53,7 @@ TEST(EnergyConservation, SphericalPendulumWithSpinKeepsItsEnergy) {
   ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
   const double e0 = energy(s, y);
   MultibodyDae dae(s);
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = 1e-7;
   settings.hmax = 1e-3;
   solvers::BdfIntegrator bdf(dae, settings);

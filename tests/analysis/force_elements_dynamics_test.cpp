@@ -44,7 +44,7 @@ void simulate(const model::Model& m, double end, double step, double error,
   mechanics::solveVelocities(s, 0.0, y);
   ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
   MultibodyDae dae(s);
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = error;
   settings.hmax = step;
   settings.hinit = step / 10;

@@ -56,7 +56,7 @@ TEST(GconPendulum, QuarterPeriodAndBottomTensionMatchClosedForms) {
   mechanics::solveVelocities(s, 0.0, y);
   ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
   MultibodyDae dae(s);
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = 1e-8;
   settings.hmax = 1e-3;
   solvers::BdfIntegrator bdf(dae, settings);

@@ -210,7 +210,7 @@ TEST(Merson, SpatialChainAgreesWithGstiffAtTightTolerance) {
   MersonIntegrator merson(*m->system, settingsFor(1e-9, 1e30));
   merson.start(0.0, m->y, m->yp);
   MultibodyDae dae(*m->system);
-  solvers::BdfSettings bs;
+  solvers::MultistepSettings bs;
   bs.error = 1e-9;
   bs.hmax = 0.01;
   bs.hinit = 1e-5;

@@ -250,7 +250,7 @@ TEST(Si2SparseIntegration, DstiffKluPathFollowsTheDenseLuPath) {
   MultibodyDaeSi2 sparseDae(*chain.system);
   openmss::testing::DenseOnlyProblem denseDae(sparseDae);
   ASSERT_GE(sparseDae.size(), solvers::BdfIntegrator::kSparseThreshold);
-  solvers::IdaSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = 1e-6;
   settings.hmax = 0.01;
   solvers::IdaIntegrator sparse(sparseDae, settings), dense(denseDae, settings);
@@ -271,7 +271,7 @@ TEST(Si2SparseIntegration, GstiffSi2KluPathFollowsTheDenseLuPath) {
   Chain chain(8);
   MultibodyDaeSi2 sparseDae(*chain.system);
   openmss::testing::DenseOnlyProblem denseDae(sparseDae);
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = 1e-6;
   settings.hmax = 0.01;
   solvers::BdfIntegrator sparse(sparseDae, settings), dense(denseDae, settings);

@@ -271,7 +271,7 @@ TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
   ASSERT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged);
   mechanics::solveVelocities(s, 0.0, y);
   ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = 1e-6;
   settings.hmax = 0.01;
   MultibodyDae sparseDae(s);

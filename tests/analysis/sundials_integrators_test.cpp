@@ -31,8 +31,8 @@ constexpr double kY1 = test::kPendulumY1;
 
 using mechanics::StateLayout;
 
-solvers::BdfSettings settingsFor(double error, double hmax) {
-  solvers::BdfSettings s;
+solvers::MultistepSettings settingsFor(double error, double hmax) {
+  solvers::MultistepSettings s;
   s.error = error;
   s.hmax = hmax;
   s.hinit = 1e-4;

@@ -35,7 +35,7 @@ class Oscillator : public DaeProblem {
 
 TEST(BdfIntegrator, StepsNeverPassTheOutputTimeAndLandOnIt) {
   Oscillator problem;
-  BdfSettings settings;
+  MultistepSettings settings;
   settings.error = 1e-8;
   settings.hinit = 1e-4;
   BdfIntegrator bdf(problem, settings);
@@ -56,7 +56,7 @@ TEST(BdfIntegrator, StepsNeverPassTheOutputTimeAndLandOnIt) {
 
 TEST(BdfIntegrator, InterpolantInsideAStepMatchesTheClosedForm) {
   Oscillator problem;
-  BdfSettings settings;
+  MultistepSettings settings;
   settings.error = 1e-9;
   settings.hinit = 1e-4;
   settings.hmax = 0.05;

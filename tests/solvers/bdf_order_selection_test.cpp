@@ -81,7 +81,7 @@ RunResult runModes(double error, bool fixedCoefficients, double end, int kmax = 
         return std::cos(1.0 + 3.0 * static_cast<double>(i) + 7.0 * static_cast<double>(j * j));
       })).householderQ();
   SpringModes problem(omega, q);
-  BdfSettings settings;
+  MultistepSettings settings;
   settings.error = error;
   settings.hinit = 1e-4;
   settings.fixedCoefficients = fixedCoefficients;
@@ -159,7 +159,7 @@ TEST(BdfOrderSelection, DetectionFiresOnlyOnUndampedModes) {
   omega << 1.0, 4.0, 40.0, 400.0;
   a << 1.0, 0.3, 1e-3, 1e-5;
   SpringModes modes(omega, Eigen::MatrixXd::Identity(4, 4));
-  BdfSettings settings;
+  MultistepSettings settings;
   settings.error = 1e-4;
   settings.hinit = 1e-4;
   settings.fixedCoefficients = true;

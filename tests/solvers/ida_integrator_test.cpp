@@ -82,7 +82,7 @@ class CartesianPendulumSi2 final : public DaeProblem {
 
 PendulumRun runPendulumSi2(double error) {
   CartesianPendulumSi2 problem;
-  IdaSettings settings;
+  MultistepSettings settings;
   settings.error = error;
   settings.hmax = 0.1;
   IdaIntegrator ida(problem, settings);
@@ -109,7 +109,7 @@ TEST(IdaIntegrator, StabilisedIndexTwoPendulumMatchesTheTestSet) {
 
 PendulumRun runPendulum(double error) {
   CartesianPendulum problem;
-  IdaSettings settings;
+  MultistepSettings settings;
   settings.error = error;
   settings.hmax = 0.1;
   IdaIntegrator ida(problem, settings);
@@ -165,7 +165,7 @@ class DecayWithAlgebraic final : public DaeProblem {
 
 TEST(IdaIntegrator, InterpolatesInsideAStepToTheClosedForm) {
   DecayWithAlgebraic problem;
-  IdaSettings settings;
+  MultistepSettings settings;
   settings.error = 1e-9;
   IdaIntegrator ida(problem, settings);
   Eigen::VectorXd y0(2), yp0(2);
@@ -216,7 +216,7 @@ class BlowsUp final : public DaeProblem {
 
 TEST(IdaIntegrator, FailureIsTypedAndNamesTheEquation) {
   BlowsUp problem;
-  IdaIntegrator ida(problem, IdaSettings{});
+  IdaIntegrator ida(problem, MultistepSettings{});
   Eigen::VectorXd y0 = Eigen::VectorXd::Zero(2), yp0(2);
   yp0 << 1.0, 0.0;
   ida.start(0.0, y0, yp0);

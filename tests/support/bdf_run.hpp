@@ -77,7 +77,7 @@ class BdfRun {
   mechanics::MultibodySystem system_;
   bool consistentOutputs_;
   Eigen::VectorXd y_, yp_;
-  solvers::BdfSettings settings_;
+  solvers::MultistepSettings settings_;
   std::unique_ptr<analysis::MultibodyDae> dae_;
   std::unique_ptr<solvers::BdfIntegrator> bdf_;
 };

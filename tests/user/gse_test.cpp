@@ -145,7 +145,7 @@ TEST(GseEquations, SecondOrderStepResponseMatchesClosedFormAndLse) {
   // Consistent start: x2' = w^2 u = 4 for every form.
   EXPECT_NEAR(yp(x1 + 1), 4.0, 1e-12);
   EXPECT_NEAR(yp(x2 + 1), 4.0, 1e-12);
-  solvers::BdfSettings settings;
+  solvers::MultistepSettings settings;
   settings.error = 1e-9;
   settings.hmax = 0.05;
   settings.hinit = 1e-4;
@@ -232,7 +232,7 @@ TEST(GseEquations, ErrmesStopDuringTheRunStopsTheIntegration) {
   ASSERT_TRUE(mechanics::solveUserAlgebraic(s, 0.0, y).converged);
   ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
   analysis::MultibodyDae dae(s);
-  solvers::BdfIntegrator bdf(dae, solvers::BdfSettings{});
+  solvers::BdfIntegrator bdf(dae, solvers::MultistepSettings{});
   bdf.start(0.0, y, yp);
   EXPECT_FALSE(bdf.advanceTo(2.0));
   EXPECT_LE(bdf.t(), 0.5);  // no step past the routine's stop is accepted
