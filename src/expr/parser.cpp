@@ -1,3 +1,5 @@
+// Over ~700 lines by intent: one recursive-descent Parser class whose grammar rules call each
+// other; splitting it would expose its private state in a header for no reader's benefit.
 #include "expr/parser.hpp"
 
 #include <algorithm>

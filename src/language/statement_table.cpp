@@ -119,6 +119,7 @@ std::vector<ArgumentSpec> kinematicsArguments() {
           flag("DEFAULT")};
 }
 
+// Over ~150 lines by intent: a table, one entry per data-set statement, read top to bottom.
 std::vector<StatementSpec> buildStatementTable() {
   std::vector<StatementSpec> t;
   const auto R = IdRule::Required;

@@ -1,3 +1,5 @@
+// Over ~700 lines by intent: the projections and the evaluation share the Engine defined here
+// (the factored Schur complement); a split would move Engine into a header of its own.
 #include "mechanics/index_one_dynamics.hpp"
 
 #include <Eigen/OrderingMethods>

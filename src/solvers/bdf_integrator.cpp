@@ -198,6 +198,8 @@ void BdfIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& d
   }
 }
 
+// Over ~150 lines: kept whole in the pure-move pass of issue 23; its phases share many locals,
+// so a split needs a state struct (left for a change that can be checked on its own).
 bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* errorNorm) {
   *newtonFailed = false;
   const double tNew = t_ + h;
@@ -411,6 +413,8 @@ void BdfIntegrator::updateDivided() {
   }
 }
 
+// Over ~150 lines: kept whole in the pure-move pass of issue 23; its phases share many locals,
+// so a split needs a state struct (left for a change that can be checked on its own).
 bool BdfIntegrator::step(double tout) {
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
   const double hmin = settings_.hmin > 0 ? settings_.hmin
