@@ -17,8 +17,8 @@ bool functionReads(const model::BoundExpression& f) {
   });
 }
 
-// y' of the kinematic rows (r' = v, e' = 1/2 e (x) (0, w)) for the current velocities, so that
-// the residual's kinematic rows vanish and only the unknown entries matter.
+}  // namespace
+
 void kinematicRates(const StateLayout& l, const Eigen::VectorXd& y, Eigen::VectorXd& yp) {
   for (int b = 0; b < l.bodies; ++b) {
     const int o = l.body(b);
@@ -31,8 +31,6 @@ void kinematicRates(const StateLayout& l, const Eigen::VectorXd& y, Eigen::Vecto
     yp(o + StateLayout::kE + 3) = 0.5 * (e(0) * w(2) + e(1) * w(1) - e(2) * w(0));
   }
 }
-
-}  // namespace
 
 bool readsAccelerationsOrReactions(const model::Model& m) {
   for (const model::SForce& f : m.sforces)

@@ -22,6 +22,10 @@ bool readsAccelerationsOrReactions(const model::Model& model);
 // or MOTION reaction: its balance rows then depend on multipliers beyond C^T lambda.
 bool forceFunctionsReadReactions(const model::Model& model);
 
+// y' of the kinematic rows (r' = v, e' = 1/2 e (x) (0, w)) for the current velocities: the
+// rows the acceleration solves (coupled and dense KKT, initial_conditions.cpp) fill alike.
+void kinematicRates(const StateLayout& l, const Eigen::VectorXd& y, Eigen::VectorXd& yp);
+
 struct CoupledAccelerationResult {
   bool converged = false;
   bool singular = false;  // the Jacobian of the coupled system is singular

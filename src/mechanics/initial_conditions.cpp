@@ -513,15 +513,9 @@ bool solveAccelerations(const MultibodySystem& system, double t, Eigen::VectorXd
   yp = Eigen::VectorXd::Zero(l.size());
   for (int k = 0; k < l.constraintEquations; ++k) y(l.lambda(k)) = 0.0;
   for (int r = 0; r < nc; ++r) y(l.lambda(rows[r])) = sol(6 * nb + r);
+  kinematicRates(l, y, yp);
   for (int b = 0; b < nb; ++b) {
     const int o = l.body(b);
-    const Eigen::Vector4d e = y.segment<4>(o + StateLayout::kE);
-    const Eigen::Vector3d w = y.segment<3>(o + StateLayout::kW);
-    yp.segment<3>(o + StateLayout::kR) = y.segment<3>(o + StateLayout::kV);
-    yp(o + StateLayout::kE + 0) = 0.5 * (-e(1) * w(0) - e(2) * w(1) - e(3) * w(2));
-    yp(o + StateLayout::kE + 1) = 0.5 * (e(0) * w(0) + e(2) * w(2) - e(3) * w(1));
-    yp(o + StateLayout::kE + 2) = 0.5 * (e(0) * w(1) + e(3) * w(0) - e(1) * w(2));
-    yp(o + StateLayout::kE + 3) = 0.5 * (e(0) * w(2) + e(1) * w(1) - e(2) * w(0));
     yp.segment<3>(o + StateLayout::kV) = sol.segment<3>(6 * b);
     yp.segment<3>(o + StateLayout::kW) = sol.segment<3>(6 * b + 3);
     y(o + StateLayout::kMu) = 0.0;
