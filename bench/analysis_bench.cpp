@@ -82,7 +82,7 @@ void BM_DynamicRunOneSecond(benchmark::State& state) {
   long steps = 0;
   for (auto _ : state) {
     analysis::MultibodyDae dae(*f.system);
-    solvers::BdfSettings s;
+    solvers::MultistepSettings s;
     s.error = 1e-6;
     s.hmax = 1e-2;
     solvers::BdfIntegrator bdf(dae, s);

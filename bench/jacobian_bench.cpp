@@ -220,7 +220,7 @@ void BM_StepLoop(benchmark::State& state) {
   const char* solver = "";
   for (auto _ : state) {
     analysis::MultibodyDae dae(*c.system);
-    solvers::BdfSettings s;
+    solvers::MultistepSettings s;
     s.error = 1e-6;
     s.hmax = 1e-3;
     s.hinit = 1e-4;
