@@ -14,6 +14,8 @@ const char* kCoordinateNames[6] = {"X", "Y", "Z", "PSI", "THETA", "PHI"};
 // model cannot close: its data contradict the equations kept.
 constexpr double kRedundantTolerance = 1e-6;
 
+}  // namespace
+
 // The residuals of the velocity and acceleration phases at the run state: the largest velocity
 // constraint error and the largest force-balance error (docs/theory.md §7).
 void phaseResiduals(const AnalysisContext& run, double& verr, double& aerr) {
@@ -40,8 +42,6 @@ void phaseResiduals(const AnalysisContext& run, double& verr, double& aerr) {
     for (int k = 0; k < 6; ++k)
       aerr = std::max(aerr, std::abs(g(system.layout().body(b) + mechanics::StateLayout::kV + k)));
 }
-
-}  // namespace
 
 mechanics::AssemblyResult assembleForInitialConditions(const AnalysisContext& run) {
   const model::Model& m = run.model;

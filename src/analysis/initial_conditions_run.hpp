@@ -19,6 +19,11 @@ mechanics::AssemblyResult assembleForInitialConditions(const AnalysisContext& ru
 // not close the constraints.
 bool reportAssembly(const AnalysisContext& run, const mechanics::AssemblyResult& r);
 
+// The residuals of the velocity and acceleration phases at the run state: the largest velocity
+// constraint error and the largest force-balance error (checked against the IC and KINEMATICS
+// statements' VERROR and AERROR).
+void phaseResiduals(const AnalysisContext& run, double& verr, double& aerr);
+
 // All phases at the run state's time; on success the run state holds the consistent state and
 // is marked initialized.
 bool solveInitialConditions(const AnalysisContext& run);

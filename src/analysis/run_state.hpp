@@ -22,7 +22,8 @@ struct RunSummary {
   long outputSteps = 0;
   long jacobians = 0;
   long residuals = 0;
-  std::string analysis;  // "dynamic", "kinematic", "static", ... of the last analysis
+  long kinematicIterations = 0;  // Newton iterations of the kinematic position phases
+  std::string analysis;          // "dynamic", "kinematic", "static", ... of the last analysis
 };
 
 struct RunState {

@@ -135,7 +135,8 @@ bool Session::execute(const language::Statement& c) {
   if (c.name == "INTEGRATOR" || c.name == "GSTIFF" || c.name == "WSTIFF" || c.name == "DSTIFF")
     return setIntegrator(c);
   if (c.name == "OUTPUT") return setOutput(c);
-  if (c.name == "EQUILIBRIUM" || c.name == "IC") return setAnalysisParameters(c);
+  if (c.name == "EQUILIBRIUM" || c.name == "IC" || c.name == "KINEMATICS")
+    return setAnalysisParameters(c);
   if (c.name == "LINEAR") return linear(c);
   if (c.name == "DEBUG") return setDebug(c);
   error(c, c.name + " is not supported yet by the solver",

@@ -40,6 +40,10 @@ class Session final : private analysis::RunReport {
   const Diagnostics& diagnostics() const { return diags_; }
   const model::Model* model() const { return model_.get(); }
   const analysis::RunSummary& summary() const;
+  // The state after the last analysis (null before a model is loaded), for callers that read
+  // results beyond the printed request file (tests against closed forms).
+  const analysis::RunState* state() const { return state_.get(); }
+  const mechanics::MultibodySystem* system() const { return system_.get(); }
   std::string requestFilePath() const;
   std::string messageFilePath() const;
   int degreesOfFreedom() const { return state_ ? state_->degreesOfFreedom : 0; }
@@ -54,7 +58,8 @@ class Session final : private analysis::RunReport {
   bool linear(const language::Statement& command);
   void stop();
   // Settings commands (settings_commands.cpp): INTEGRATOR (and GSTIFF, WSTIFF, DSTIFF),
-  // OUTPUT, EQUILIBRIUM and IC, DEBUG. Each changes the model's settings for later analyses.
+  // OUTPUT, EQUILIBRIUM, IC and KINEMATICS, DEBUG. Each changes the model's settings for
+  // later analyses.
   bool setIntegrator(const language::Statement& command);
   bool setOutput(const language::Statement& command);
   bool setAnalysisParameters(const language::Statement& command);

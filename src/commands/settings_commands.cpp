@@ -1,6 +1,6 @@
 // Session: the commands that change the model's settings for later analyses: INTEGRATOR (and
-// the FORTRAN-era GSTIFF, WSTIFF, DSTIFF), OUTPUT, EQUILIBRIUM and IC (docs/theory.md §7 and
-// "Statics"), DEBUG. A rejected command leaves the settings as they were.
+// the FORTRAN-era GSTIFF, WSTIFF, DSTIFF), OUTPUT, EQUILIBRIUM, IC and KINEMATICS (docs/theory.md
+// §7 and "Statics"), DEBUG. A rejected command leaves the settings as they were.
 
 #include "analysis/analysis_context.hpp"
 #include "analysis/integrator_factory.hpp"
@@ -37,6 +37,17 @@ std::string initialConditionListing(const model::InitialConditionSettings& i) {
          ", PATTERN=" + patternText(i.pattern) +
          ", TLIMIT=" + formatNumber("%g", i.translationLimit) +
          ", VERROR=" + formatNumber("%g", i.velocityError);
+}
+
+std::string kinematicListing(const model::KinematicSettings& k) {
+  return " KINEMATICS: AERROR=" + formatNumber("%g", k.accelerationError) +
+         ", ALIMIT=" + formatNumber("%g", k.angleLimit) +
+         " rad, AMAXIT=" + std::to_string(k.accelerationMaxit) +
+         ", APATTERN=" + patternText(k.accelerationPattern) +
+         ", ERROR=" + formatNumber("%g", k.error) +
+         ", HMAX=" + (k.hmax ? formatNumber("%g", *k.hmax) : std::string("(output step)")) +
+         ", MAXIT=" + std::to_string(k.maxit) + ", PATTERN=" + patternText(k.pattern) +
+         ", TLIMIT=" + formatNumber("%g", k.translationLimit);
 }
 
 }  // namespace
@@ -81,13 +92,23 @@ bool Session::setIntegrator(const language::Statement& c) {
 bool Session::setAnalysisParameters(const language::Statement& c) {
   model::Model& m = *model_;
   Diagnostics local;
-  const bool ok = c.name == "EQUILIBRIUM"
-                      ? model::applyEquilibriumArguments(c, m.equilibrium, local)
-                      : model::applyInitialConditionArguments(c, m.initialConditions, local);
+  // Applied to a copy: a rejected command leaves the settings as they were.
+  bool ok = false;
+  if (c.name == "EQUILIBRIUM") {
+    model::EquilibriumSettings next = m.equilibrium;
+    if ((ok = model::applyEquilibriumArguments(c, next, local))) m.equilibrium = next;
+  } else if (c.name == "KINEMATICS") {
+    model::KinematicSettings next = m.kinematics;
+    if ((ok = model::applyKinematicArguments(c, next, local))) m.kinematics = next;
+  } else {
+    model::InitialConditionSettings next = m.initialConditions;
+    if ((ok = model::applyInitialConditionArguments(c, next, local))) m.initialConditions = next;
+  }
   reportAll(local);
   if (c.has("LIST"))
-    msg_.line(c.name == "EQUILIBRIUM" ? equilibriumListing(m.equilibrium)
-                                      : initialConditionListing(m.initialConditions));
+    msg_.line(c.name == "EQUILIBRIUM"  ? equilibriumListing(m.equilibrium)
+              : c.name == "KINEMATICS" ? kinematicListing(m.kinematics)
+                                       : initialConditionListing(m.initialConditions));
   return ok;
 }
 

@@ -34,7 +34,7 @@ std::vector<StatementSpec> finalStatementTable() {
   markSupported(t, {"TITLE", "UNITS", "PART", "MARKER", "JOINT", "MOTION", "SFORCE", "ACCGRAV",
                     "REQUEST", "GRAPHICS", "OUTPUT", "END", "SPRINGDAMPER", "BUSHING", "FIELD",
                     "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC", "INTEGRATOR",
-                    "DEBUG"});
+                    "KINEMATICS", "DEBUG"});
   return t;
 }
 
@@ -43,7 +43,8 @@ std::vector<StatementSpec> finalCommandTable() {
   assignAutomaticAbbreviations(t);
   // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
   markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "WSTIFF", "DSTIFF", "SIMULATE", "STOP",
-                    "FILE", "HELP", "EQUILIBRIUM", "IC", "LINEAR", "DEBUG"});
+                    "FILE", "HELP", "EQUILIBRIUM", "IC", "KINEMATICS", "LINEAR",
+                    "DEBUG"});
   return t;
 }
 

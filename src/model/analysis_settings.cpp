@@ -85,6 +85,44 @@ bool applyInitialConditionArguments(const language::Statement& s,
   return r.ok();
 }
 
+bool applyKinematicArguments(const language::Statement& s, KinematicSettings& settings,
+                             Diagnostics& diags) {
+  StatementArguments r(s, diags);
+  if (s.has("DEFAULT")) settings = {};
+  for (const language::Argument& a : s.args) {
+    if (a.name == "DEFAULT" || a.name == "LIST") continue;
+    if (a.name == "AERROR") {
+      r.positive(a, settings.accelerationError);
+    } else if (a.name == "ALIMIT") {
+      r.positive(a, settings.angleLimit);
+    } else if (a.name == "AMAXIT" || a.name == "APATTERN") {
+      // Read (and checked) for the LIST output, but the acceleration phase is one direct solve
+      // of the linear saddle-point system (docs/theory.md §7): no iterations to limit.
+      if (a.name == "AMAXIT")
+        r.count(a, settings.accelerationMaxit);
+      else
+        readPattern(r, a, settings.accelerationPattern);
+      diags.warning(a.where, s.subject(),
+                    a.name + " has no effect: the accelerations and forces of a kinematic "
+                             "analysis are one direct linear solve, without iterations",
+                    "Remove " + a.name + " to silence this warning.");
+    } else if (a.name == "ERROR") {
+      r.positive(a, settings.error);
+    } else if (a.name == "HMAX") {
+      r.positive(a, settings.hmax.emplace());
+    } else if (a.name == "MAXIT") {
+      r.count(a, settings.maxit);
+    } else if (a.name == "PATTERN") {
+      readPattern(r, a, settings.pattern);
+    } else if (a.name == "TLIMIT") {
+      r.positive(a, settings.translationLimit);
+    } else {
+      r.unsupported(a, "docs/language.md lists the KINEMATICS arguments; remove " + a.name + ".");
+    }
+  }
+  return r.ok();
+}
+
 const char* integratorTypeName(IntegratorType type) {
   switch (type) {
     case IntegratorType::Gstiff: return "GSTIFF";

@@ -1,5 +1,5 @@
 #pragma once
-// Solution-control parameters of the EQUILIBRIUM and IC statements and commands (docs/language.md,
+// Solution-control parameters of the EQUILIBRIUM, IC and KINEMATICS statements and commands (docs/language.md,
 // "Solution-control statements"). The statement sets them in the Model; the command changes them
 // between analyses. Defaults are ADAMS/Solver (C++)'s.
 
@@ -37,6 +37,22 @@ struct InitialConditionSettings {
   JacobianPattern pattern;                              // PATTERN (positions)
   double translationLimit = 1e10;                       // TLIMIT
   double velocityError = 1e-4;                          // VERROR
+};
+
+// KINEMATICS statement and command (docs/language.md, "KINEMATICS"): the controls of
+// SIMULATE/KINEMATICS (analysis/kinematic_run.cpp). Defaults are ADAMS's except ERROR: ADAMS
+// takes 1e-4, OpenMSS 1e-12 on the largest |Phi| so that the outputs of a kinematic analysis are
+// exact to round-off unless the user asks for less (docs/language.md).
+struct KinematicSettings {
+  double accelerationError = 1e-4;                      // AERROR: largest force imbalance
+  double angleLimit = 30.0 * std::numbers::pi / 180.0;  // ALIMIT, rad per Newton iteration
+  int accelerationMaxit = 25;                           // AMAXIT (no effect: linear solve)
+  JacobianPattern accelerationPattern;                  // APATTERN (no effect: linear solve)
+  double error = 1e-12;                                 // ERROR: largest |Phi| at convergence
+  std::optional<double> hmax;                           // HMAX: largest step between solves
+  int maxit = 25;                                       // MAXIT (positions)
+  JacobianPattern pattern;                              // PATTERN (positions)
+  double translationLimit = 1e10;                       // TLIMIT, length per Newton iteration
 };
 
 // INTEGRATOR statement and command (docs/integrators.md, "Defaults"). Unset optionals take

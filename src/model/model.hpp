@@ -395,6 +395,7 @@ struct Model {
   EquilibriumSettings equilibrium;            // EQUILIBRIUM statement (and command)
   InitialConditionSettings initialConditions;  // IC statement (and command)
   IntegratorSettings integrator;               // INTEGRATOR statement (and command)
+  KinematicSettings kinematics;                // KINEMATICS statement (and command)
   std::vector<int> movingParts;  // part index of each moving body, in state order
   int groundPart = -1;
 

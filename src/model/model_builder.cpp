@@ -27,7 +27,7 @@ const std::set<std::string>& supportedStatements() {
   static const std::set<std::string> s = {"UNITS",  "PART",     "MARKER",  "JOINT",
                                           "MOTION", "SFORCE",   "ACCGRAV", "REQUEST",
                                           "GRAPHICS", "OUTPUT", "END",     "TITLE",
-                                          "EQUILIBRIUM", "IC", "JPRIM",
+                                          "EQUILIBRIUM", "IC", "KINEMATICS", "JPRIM",
                                           // force elements (force_element_builder.cpp)
                                           "SPRINGDAMPER", "BUSHING", "FIELD", "BEAM",
                                           "VFORCE", "VTORQUE", "GFORCE",
@@ -119,6 +119,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       applyEquilibriumArguments(s, model.equilibrium, diags);
     } else if (s.name == "IC") {
       applyInitialConditionArguments(s, model.initialConditions, diags);
+    } else if (s.name == "KINEMATICS") {
+      applyKinematicArguments(s, model.kinematics, diags);
     } else if (s.name == "INTEGRATOR") {
       applyIntegratorArguments(s, model.integrator, diags);
     } else if (s.name == "ACCGRAV") {

@@ -1,6 +1,6 @@
 #pragma once
-// The arguments of the INTEGRATOR, EQUILIBRIUM and IC statements and commands applied to their
-// settings (model/analysis_settings.hpp). Apart from the settings themselves so that the
+// The arguments of the INTEGRATOR, EQUILIBRIUM, IC and KINEMATICS statements and commands applied
+// to their settings (model/analysis_settings.hpp). Apart from the settings themselves so that the
 // layers that only read the settings (mechanics, analysis) do not see the language layer.
 
 #include "common/diagnostics.hpp"
@@ -22,5 +22,9 @@ bool applyEquilibriumArguments(const language::Statement& s, EquilibriumSettings
                                Diagnostics& diags);
 bool applyInitialConditionArguments(const language::Statement& s,
                                     InitialConditionSettings& settings, Diagnostics& diags);
+// KINEMATICS: AMAXIT and APATTERN are accepted with a warning (the accelerations are one
+// direct linear solve, so they have no effect); bad values and unknown arguments are errors.
+bool applyKinematicArguments(const language::Statement& s, KinematicSettings& settings,
+                             Diagnostics& diags);
 
 }  // namespace openmss::model
