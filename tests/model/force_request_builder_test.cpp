@@ -10,28 +10,15 @@
 
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
+#include "support/built_model.hpp"
 
 namespace openmss::model {
 namespace {
 
-struct Built {
-  Model model;
-  Diagnostics diags;
-  bool ok = false;
-  std::vector<std::string> messages() const {
-    std::vector<std::string> out;
-    for (const auto& d : diags.all()) out.push_back(format(d));
-    return out;
-  }
-};
+using Built = testing::BuiltModel;
 
 Built build(const std::string& text) {
-  Built b;
-  language::Dataset dataset;
-  language::readDatasetText(text, "f.adm", dataset, b.diags);
-  EXPECT_FALSE(b.diags.hasErrors()) << "the reader must accept the data set";
-  b.ok = buildModel(dataset, b.model, b.diags);
-  return b;
+  return testing::buildModelFromText(text, "f.adm");
 }
 
 const char* kParts =

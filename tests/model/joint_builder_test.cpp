@@ -10,20 +10,12 @@
 
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
+#include "support/built_model.hpp"
 
 namespace openmss::model {
 namespace {
 
-struct Built {
-  Model model;
-  Diagnostics diags;
-  bool ok = false;
-  std::vector<std::string> messages() const {
-    std::vector<std::string> out;
-    for (const auto& d : diags.all()) out.push_back(format(d));
-    return out;
-  }
-};
+using Built = testing::BuiltModel;
 
 // Ground (markers 10-19) and two moving parts (markers 20-29 on PART/2, 30-39 on PART/3).
 const char* kParts =
@@ -39,12 +31,7 @@ const char* kParts =
     "MARKER/30, PART=3\n";  // the statements below start on line 11
 
 Built build(const std::string& statements) {
-  Built b;
-  language::Dataset dataset;
-  language::readDatasetText(std::string(kParts) + statements + "END\n", "j.adm", dataset, b.diags);
-  EXPECT_FALSE(b.diags.hasErrors()) << "the reader must accept the data set";
-  b.ok = buildModel(dataset, b.model, b.diags);
-  return b;
+  return testing::buildModelFromText(std::string(kParts) + statements + "END\n", "j.adm");
 }
 
 TEST(JointBuilder, EveryJointKeywordSelectsItsKind) {

@@ -14,32 +14,17 @@
 
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
+#include "support/built_model.hpp"
 
 namespace openmss::model {
 namespace {
 
 constexpr double kTol = 1e-14;
 
-struct Built {
-  Model model;
-  Diagnostics diags;
-  bool ok = false;
-  std::vector<std::string> messages() const {
-    std::vector<std::string> out;
-    for (const auto& d : diags.all()) out.push_back(format(d));
-    return out;
-  }
-  const Marker& marker(long id) const { return model.markers.at(model.markerIndex.at(id)); }
-  const Part& part(long id) const { return model.parts.at(model.partIndex.at(id)); }
-};
+using Built = testing::BuiltModel;
 
 Built build(const std::string& text) {
-  Built b;
-  language::Dataset dataset;
-  language::readDatasetText(text, "p.adm", dataset, b.diags);
-  EXPECT_FALSE(b.diags.hasErrors()) << "the reader must accept the data set";
-  b.ok = buildModel(dataset, b.model, b.diags);
-  return b;
+  return testing::buildModelFromText(text, "p.adm");
 }
 
 // A marker's pose in ground from the built model.
