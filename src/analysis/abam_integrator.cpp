@@ -10,6 +10,7 @@
 #include <sunlinsol/sunlinsol_dense.h>
 #include <sunmatrix/sunmatrix_dense.h>
 
+#include "analysis/analysis_context.hpp"  // formatNumber
 #include "analysis/predicted_residual.hpp"
 
 namespace openmss::analysis {
@@ -30,12 +31,6 @@ constexpr double kStiffStepRatio = 0.5;
 constexpr long kStiffStepsBeforeWarning = 20;
 // Accepted steps between estimates of the spectral radius.
 constexpr long kStepsBetweenEstimates = 200;
-
-std::string format(const char* pattern, double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, pattern, value);
-  return buf;
-}
 
 }  // namespace
 
@@ -176,9 +171,10 @@ void AbamIntegrator::watchStiffness(double h) {
   stiff_ = true;
   warnings_.push_back(
       "ABAM: the model is stiff. The reduced Jacobian has an eigenvalue of magnitude " +
-      format("%.3E", spectralRadius_) + " 1/s (time constant " +
-      format("%.3E", 1.0 / spectralRadius_) + " s) and the Adams steps (" + format("%.3E", h) +
-      " s at t = " + format("%.6E", t_) +
+      formatNumber("%.3E", spectralRadius_) + " 1/s (time constant " +
+      formatNumber("%.3E", 1.0 / spectralRadius_) + " s) and the Adams steps (" +
+      formatNumber("%.3E", h) +
+      " s at t = " + formatNumber("%.6E", t_) +
       ") are held by its stability, not by accuracy. ABAM is meant for non-stiff models; "
       "use INTEGRATOR/GSTIFF (or WSTIFF, DSTIFF) for this model.");
 }

@@ -194,7 +194,7 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
     p.beta = s.beta.value_or((1.0 - s.alpha) * (1.0 - s.alpha) / 4.0);
     p.gamma = s.gamma.value_or((1.0 - 2.0 * s.alpha) / 2.0);
   }
-  const model::JacobianPattern pattern = s.pattern.value_or(model::JacobianPattern{
+  const model::RefreshPattern pattern = s.pattern.value_or(model::RefreshPattern{
       {true, false, false, false, true, false, false, false, true, false}});
   p.patternGiven = s.pattern.has_value();
   for (int j = 0; j < 10; ++j) p.pattern[j] = pattern.evaluate[static_cast<size_t>(j)];

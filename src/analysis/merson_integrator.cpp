@@ -5,6 +5,7 @@
 #include <cstdio>
 #include <limits>
 
+#include "analysis/analysis_context.hpp"  // formatNumber
 #include "analysis/predicted_residual.hpp"
 #include "mechanics/state_layout.hpp"
 
@@ -86,12 +87,6 @@ constexpr int kPowerIterations = 8;
 constexpr int kWarmIterations = 2;
 constexpr double kPowerTolerance = 0.02;
 
-std::string format(const char* pattern, double value) {
-  char buf[64];
-  std::snprintf(buf, sizeof buf, pattern, value);
-  return buf;
-}
-
 }  // namespace
 
 MersonIntegrator::MersonIntegrator(const mechanics::MultibodySystem& system,
@@ -149,7 +144,7 @@ void MersonIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::
         gather(y_, x);
         return x;
       }())) {
-    recordFailure("the KKT matrix is singular at t = " + format("%.6E", t0), 0.0, nullptr);
+    recordFailure("the KKT matrix is singular at t = " + formatNumber("%.6E", t0), 0.0, nullptr);
     return;
   }
   xPrevious_ = x_;
@@ -242,7 +237,7 @@ bool MersonIntegrator::step(double tout) {
       fPrevious_ = f_;
       t_ = tNew;
       if (!acceptState(t_, xNew_)) {
-        recordFailure("the KKT matrix is singular at t = " + format("%.6E", t_), h, nullptr);
+        recordFailure("the KKT matrix is singular at t = " + formatNumber("%.6E", t_), h, nullptr);
         return false;
       }
       ++stats_.steps;
@@ -276,12 +271,13 @@ bool MersonIntegrator::step(double tout) {
     rejectedLast_ = true;
     if (h_ < hmin) {
       if (!ok)
-        recordFailure("the KKT matrix is singular at t = " + format("%.6E", t_) +
+        recordFailure("the KKT matrix is singular at t = " + formatNumber("%.6E", t_) +
                           " (every step down to HMIN reaches a singular configuration)",
                       h, nullptr);
       else
         recordFailure(
-            "the local error stays above ERROR with steps down to HMIN = " + format("%.3E", hmin),
+            "the local error stays above ERROR with steps down to HMIN = " +
+                formatNumber("%.3E", hmin),
             h, &errors_);
       return false;
     }
@@ -405,10 +401,11 @@ void MersonIntegrator::watchStiffness(double h) {
   stiff_ = true;
   warnings_.push_back(
       "MERSON: the model is stiff. The equations of motion have an eigenvalue of magnitude " +
-      format("%.3E", spectralRadius_) + " 1/s (time constant " +
-      format("%.3E", 1.0 / spectralRadius_) + " s) whose stability holds the explicit steps to " +
-      format("%.3E", meanStep) + " s (around t = " + format("%.6E", t_) +
-      "), while the motion would allow steps of about " + format("%.3E", accuracyStep_) +
+      formatNumber("%.3E", spectralRadius_) + " 1/s (time constant " +
+      formatNumber("%.3E", 1.0 / spectralRadius_) +
+      " s) whose stability holds the explicit steps to " +
+      formatNumber("%.3E", meanStep) + " s (around t = " + formatNumber("%.6E", t_) +
+      "), while the motion would allow steps of about " + formatNumber("%.3E", accuracyStep_) +
       " s for ERROR. INTEGRATOR/GSTIFF (or WSTIFF, DSTIFF) is not bound by this mode and can "
       "take the larger steps.");
 }

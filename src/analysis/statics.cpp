@@ -344,14 +344,8 @@ EquilibriumResult solveStaticEquilibrium(const mechanics::MultibodySystem& syste
       solver.compute(jac);
     }
     Eigen::VectorXd delta = solver.solve(-g);
-    double scale = 1.0;
-    for (int b = 0; b < nb; ++b) {
-      const double dr = delta.segment<3>(6 * b).cwiseAbs().maxCoeff();
-      const double da = delta.segment<3>(6 * b + 3).norm();
-      if (dr > settings.translationLimit) scale = std::min(scale, settings.translationLimit / dr);
-      if (da > settings.angleLimit) scale = std::min(scale, settings.angleLimit / da);
-    }
-    delta *= scale;
+    delta *= mechanics::limitedCorrectionScale(delta, nb, settings.translationLimit,
+                                               settings.angleLimit);
     lastCorrection = largestCorrection(delta, nb);
     if (nu > 0) lastCorrection = std::max(lastCorrection, delta.tail(nu).cwiseAbs().maxCoeff());
     applyStaticCorrection(system, rows, delta, y);

@@ -13,7 +13,7 @@ namespace {
 
 using analysis::formatNumber;
 
-std::string patternText(const model::JacobianPattern& p) {
+std::string patternText(const model::RefreshPattern& p) {
   std::string s;
   for (size_t k = 0; k < p.evaluate.size(); ++k)
     s += std::string(k ? ":" : "") + (p.evaluate[k] ? "T" : "F");

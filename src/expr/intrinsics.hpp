@@ -1,6 +1,6 @@
 #pragma once
 // The FORTRAN-77 intrinsics of ADAMS expressions and the `**` operator, written once for every
-// number type of jet.hpp (double, Dual, Jet2) so that values, first partials and time jets all
+// number type of jet.hpp (double, Jet1, Jet2) so that values, first partials and time jets all
 // come from the same definition.
 //
 // Where a function has a kink or a jump, the derivative is the one of the piece that the value

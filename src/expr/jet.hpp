@@ -4,7 +4,7 @@
 // Every built-in function is written once as a template over its number type and instantiated
 // for three types:
 //  * double  - plain values (the integrator's inner loop);
-//  * Dual    - value and one directional first derivative; the reverse-mode evaluator uses it
+//  * Jet1    - value and one directional first derivative; the reverse-mode evaluator uses it
 //              to obtain a function's exact partial with respect to one argument;
 //  * Jet2    - value, first and second derivative along one parameter (TIME for MOTION).
 // Only the value takes part in comparisons, so a branch (STEP, IF, MAX, ...) is chosen by the
@@ -14,7 +14,7 @@
 
 namespace openmss::expr {
 
-struct Dual {
+struct Jet1 {
   double v;  // value
   double d;  // derivative along the seeded direction
 };
@@ -28,7 +28,7 @@ struct Jet2 {
 };
 
 inline double valueOf(double x) { return x; }
-inline double valueOf(const Dual& x) { return x.v; }
+inline double valueOf(const Jet1& x) { return x.v; }
 inline double valueOf(const Jet2& x) { return x.v; }
 
 // A number of type T that is a constant (all derivatives zero).
@@ -39,7 +39,7 @@ inline double constant<double>(double x) {
   return x;
 }
 template <>
-inline Dual constant<Dual>(double x) {
+inline Jet1 constant<Jet1>(double x) {
   return {x, 0.0};
 }
 template <>
@@ -48,7 +48,7 @@ inline Jet2 constant<Jet2>(double x) {
 }
 
 inline bool hasDerivative(double) { return false; }
-inline bool hasDerivative(const Dual& x) { return x.d != 0.0; }
+inline bool hasDerivative(const Jet1& x) { return x.d != 0.0; }
 inline bool hasDerivative(const Jet2& x) { return x.d1 != 0.0 || x.d2 != 0.0; }
 
 // Chain rule for g(u). g is the value at u; firstDerivative() and secondDerivative() give g'
@@ -59,7 +59,7 @@ double chain(double, double g, F1&&, F2&&) {
   return g;
 }
 template <typename F1, typename F2>
-Dual chain(const Dual& u, double g, F1&& firstDerivative, F2&&) {
+Jet1 chain(const Jet1& u, double g, F1&& firstDerivative, F2&&) {
   return {g, firstDerivative() * u.d};
 }
 template <typename F1, typename F2>
@@ -73,7 +73,7 @@ struct BinaryPartials {
   double g, ga, gb, gaa, gab, gbb;
 };
 inline double chain2(double, double, const BinaryPartials& p) { return p.g; }
-inline Dual chain2(const Dual& a, const Dual& b, const BinaryPartials& p) {
+inline Jet1 chain2(const Jet1& a, const Jet1& b, const BinaryPartials& p) {
   return {p.g, p.ga * a.d + p.gb * b.d};
 }
 inline Jet2 chain2(const Jet2& a, const Jet2& b, const BinaryPartials& p) {
@@ -84,22 +84,22 @@ inline Jet2 chain2(const Jet2& a, const Jet2& b, const BinaryPartials& p) {
 
 // --- Arithmetic -------------------------------------------------------------------------------
 
-inline Dual operator-(const Dual& a) { return {-a.v, -a.d}; }
-inline Dual operator+(const Dual& a, const Dual& b) { return {a.v + b.v, a.d + b.d}; }
-inline Dual operator-(const Dual& a, const Dual& b) { return {a.v - b.v, a.d - b.d}; }
-inline Dual operator*(const Dual& a, const Dual& b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
-inline Dual operator/(const Dual& a, const Dual& b) {
+inline Jet1 operator-(const Jet1& a) { return {-a.v, -a.d}; }
+inline Jet1 operator+(const Jet1& a, const Jet1& b) { return {a.v + b.v, a.d + b.d}; }
+inline Jet1 operator-(const Jet1& a, const Jet1& b) { return {a.v - b.v, a.d - b.d}; }
+inline Jet1 operator*(const Jet1& a, const Jet1& b) { return {a.v * b.v, a.d * b.v + a.v * b.d}; }
+inline Jet1 operator/(const Jet1& a, const Jet1& b) {
   const double q = a.v / b.v;
   return {q, (a.d - q * b.d) / b.v};
 }
-inline Dual operator+(const Dual& a, double b) { return {a.v + b, a.d}; }
-inline Dual operator+(double a, const Dual& b) { return {a + b.v, b.d}; }
-inline Dual operator-(const Dual& a, double b) { return {a.v - b, a.d}; }
-inline Dual operator-(double a, const Dual& b) { return {a - b.v, -b.d}; }
-inline Dual operator*(const Dual& a, double b) { return {a.v * b, a.d * b}; }
-inline Dual operator*(double a, const Dual& b) { return {a * b.v, a * b.d}; }
-inline Dual operator/(const Dual& a, double b) { return {a.v / b, a.d / b}; }
-inline Dual operator/(double a, const Dual& b) { return constant<Dual>(a) / b; }
+inline Jet1 operator+(const Jet1& a, double b) { return {a.v + b, a.d}; }
+inline Jet1 operator+(double a, const Jet1& b) { return {a + b.v, b.d}; }
+inline Jet1 operator-(const Jet1& a, double b) { return {a.v - b, a.d}; }
+inline Jet1 operator-(double a, const Jet1& b) { return {a - b.v, -b.d}; }
+inline Jet1 operator*(const Jet1& a, double b) { return {a.v * b, a.d * b}; }
+inline Jet1 operator*(double a, const Jet1& b) { return {a * b.v, a * b.d}; }
+inline Jet1 operator/(const Jet1& a, double b) { return {a.v / b, a.d / b}; }
+inline Jet1 operator/(double a, const Jet1& b) { return constant<Jet1>(a) / b; }
 
 inline Jet2 operator-(const Jet2& a) { return {-a.v, -a.d1, -a.d2}; }
 inline Jet2 operator+(const Jet2& a, const Jet2& b) {

@@ -294,7 +294,7 @@ double Program::forwardWithPartials(double* v, double* p, std::uint32_t* trace,
       case OpCode::Call: {
         // One dual-number evaluation per varying argument gives that argument's exact partial
         // (POLY(TIME, ...) needs one, IMPACT(x, xdot, ...) two).
-        Dual args[kMaxBuiltinArguments];
+        Jet1 args[kMaxBuiltinArguments];
         for (std::uint16_t j = 0; j < ins.operandCount; ++j) args[j] = {v[in[j]], 0.0};
         double value = 0.0;
         bool valueKnown = false;
@@ -304,7 +304,7 @@ double Program::forwardWithPartials(double* v, double* p, std::uint32_t* trace,
             continue;
           }
           args[j].d = 1.0;
-          const Dual result = applyBuiltin(ins.builtin, args, ins.operandCount);
+          const Jet1 result = applyBuiltin(ins.builtin, args, ins.operandCount);
           args[j].d = 0.0;
           partial[j] = result.d;
           value = result.v;

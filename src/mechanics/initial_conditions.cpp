@@ -1,5 +1,6 @@
 #include "mechanics/initial_conditions.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "common/rotation.hpp"
@@ -9,6 +10,18 @@
 #include "mechanics/user_state_solve.hpp"
 
 namespace openmss::mechanics {
+
+double limitedCorrectionScale(const Eigen::VectorXd& delta, int bodies, double translationLimit,
+                              double angleLimit) {
+  double scale = 1.0;
+  for (int b = 0; b < bodies; ++b) {
+    const double dr = delta.segment<3>(6 * b).cwiseAbs().maxCoeff();
+    const double da = delta.segment<3>(6 * b + 3).norm();
+    if (dr > translationLimit) scale = std::min(scale, translationLimit / dr);
+    if (da > angleLimit) scale = std::min(scale, angleLimit / da);
+  }
+  return scale;
+}
 
 bool usesSparseAlgebra(const MultibodySystem& system, LinearAlgebra method) {
   if (method == LinearAlgebra::Automatic) return system.layout().bodies >= kSparseFromBodies;
@@ -359,14 +372,8 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
     } else {
       delta = transform * (columnScale.asDiagonal() * cod.solve(-phi));
     }
-    // TLIMIT / ALIMIT: scale the whole correction so that no body moves or turns more.
-    double scale = 1.0;
-    for (int b = 0; b < nb; ++b) {
-      const double dr = delta.segment<3>(6 * b).cwiseAbs().maxCoeff();
-      const double da = delta.segment<3>(6 * b + 3).norm();
-      if (dr > options.translationLimit) scale = std::min(scale, options.translationLimit / dr);
-      if (da > options.angleLimit) scale = std::min(scale, options.angleLimit / da);
-    }
+    const double scale =
+        limitedCorrectionScale(delta, nb, options.translationLimit, options.angleLimit);
     applyBodyCorrection(l, scale * delta, y);
   }
   for (int b = 0; b < nb; ++b) {

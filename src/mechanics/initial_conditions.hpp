@@ -80,6 +80,12 @@ AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen:
 // kExactWeight times the others.
 AssemblyResult assemblePositions(const MultibodySystem& system, double t, Eigen::VectorXd& y,
                                  const AssemblyOptions& options);
+// TLIMIT / ALIMIT (IC, KINEMATICS, EQUILIBRIUM): the factor, at most 1, that scales a whole
+// body correction (6 entries a body: translation, rotation) so that no body moves more than
+// translationLimit along an axis or turns more than angleLimit.
+double limitedCorrectionScale(const Eigen::VectorXd& delta, int bodies, double translationLimit,
+                              double angleLimit);
+
 // Applies a correction of body positions (ground) and body-axes rotations (6 per body).
 void applyBodyCorrection(const StateLayout& layout, const Eigen::VectorXd& delta,
                          Eigen::VectorXd& y);

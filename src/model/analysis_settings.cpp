@@ -10,7 +10,7 @@ namespace {
 
 // PATTERN=c1:...:c10 (T or F each). The values given repeat until MAXIT (docs/language.md,
 // "EQUILIBRIUM and IC"): T:F means every other iteration.
-void readPattern(StatementArguments& r, const language::Argument& a, JacobianPattern& out) {
+void readPattern(StatementArguments& r, const language::Argument& a, RefreshPattern& out) {
   if (a.values.empty() || a.values.size() > 10) {
     r.error(a, a.name + " takes 1 to 10 of T and F", "Write " + a.name + "=T:F:F:F, for example.");
     return;

@@ -12,7 +12,7 @@ namespace openmss::model {
 
 // PATTERN=c1:...:c10: entry j tells whether the Jacobian is re-formed at iteration j; the
 // pattern repeats until MAXIT. Iteration 0 always forms it.
-struct JacobianPattern {
+struct RefreshPattern {
   std::array<bool, 10> evaluate = {true, true, true, true, true, true, true, true, true, true};
   bool at(int iteration) const { return iteration == 0 || evaluate[iteration % 10]; }
 };
@@ -22,7 +22,7 @@ struct EquilibriumSettings {
   double error = 1e-4;             // ERROR: largest position correction at convergence
   double imbalance = 1e-4;         // IMBALANCE: largest force/moment residual at convergence
   int maxit = 25;                  // MAXIT
-  JacobianPattern pattern;         // PATTERN
+  RefreshPattern pattern;         // PATTERN
   double stability = 1e-5;         // STABILITY: fraction of the mass matrix added to the stiffness
   double translationLimit = 20.0;  // TLIMIT, length units per iteration
 };
@@ -31,10 +31,10 @@ struct InitialConditionSettings {
   double accelerationError = 1e-4;                      // AERROR
   double angleLimit = 30.0 * std::numbers::pi / 180.0;  // ALIMIT
   int accelerationMaxit = 25;                           // AMAXIT
-  JacobianPattern accelerationPattern;                  // APATTERN
+  RefreshPattern accelerationPattern;                  // APATTERN
   double error = 1e-10;                                 // ERROR (positions)
   int maxit = 25;                                       // MAXIT (positions)
-  JacobianPattern pattern;                              // PATTERN (positions)
+  RefreshPattern pattern;                              // PATTERN (positions)
   double translationLimit = 1e10;                       // TLIMIT
   double velocityError = 1e-4;                          // VERROR
 };
@@ -47,11 +47,11 @@ struct KinematicSettings {
   double accelerationError = 1e-4;                      // AERROR: largest force imbalance
   double angleLimit = 30.0 * std::numbers::pi / 180.0;  // ALIMIT, rad per Newton iteration
   int accelerationMaxit = 25;                           // AMAXIT (no effect: linear solve)
-  JacobianPattern accelerationPattern;                  // APATTERN (no effect: linear solve)
+  RefreshPattern accelerationPattern;                  // APATTERN (no effect: linear solve)
   double error = 1e-12;                                 // ERROR: largest |Phi| at convergence
   std::optional<double> hmax;                           // HMAX: largest step between solves
   int maxit = 25;                                       // MAXIT (positions)
-  JacobianPattern pattern;                              // PATTERN (positions)
+  RefreshPattern pattern;                              // PATTERN (positions)
   double translationLimit = 1e10;                       // TLIMIT, length per Newton iteration
 };
 
@@ -68,7 +68,7 @@ struct IntegratorSettings {
   std::optional<double> error, hinit, hmin, hmax;  // ERROR, HINIT, HMIN, HMAX
   std::optional<int> kmax;                         // KMAX
   int maxit = 10;                                  // MAXIT
-  std::optional<JacobianPattern> pattern;          // PATTERN (unset: adaptive re-evaluation)
+  std::optional<RefreshPattern> pattern;          // PATTERN (unset: adaptive re-evaluation)
   std::optional<bool> interpolate;                 // INTERPOLATE=ON/OFF
   double alpha = -0.3;                             // ALPHA (HHT)
   std::optional<double> beta, gamma;               // BETA, GAMMA (NEWMARK; HHT derives them)
