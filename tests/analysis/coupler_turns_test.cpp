@@ -20,10 +20,10 @@
 #include "support/cli_run.hpp"
 #include "support/random_state.hpp"
 
+namespace openmss {
 namespace {
 
 namespace fs = std::filesystem;
-using namespace openmss;
 using testing::scratch;
 using testing::slurp;
 using testing::write;
@@ -129,3 +129,4 @@ TEST(CouplerTurns, ManyTurnsWithRejectedStepsFollowTheClosedForm) {
 }
 
 }  // namespace
+}  // namespace openmss

@@ -97,7 +97,9 @@ Outputs saveAndContinue(const std::string& name, const std::string& model,
   Outputs o;
   {
     Study u = open(dir, "m.adm", "u");
-    if (!integrator.empty()) EXPECT_TRUE(command(u, integrator));
+    if (!integrator.empty()) {
+      EXPECT_TRUE(command(u, integrator));
+    }
     EXPECT_TRUE(command(u, "SIMULATE/DYNAMICS, END=1, STEPS=10"));
     EXPECT_TRUE(command(u, "SIMULATE/DYNAMICS, END=2, STEPS=10"));
     EXPECT_TRUE(command(u, "STOP"));
@@ -107,7 +109,9 @@ Outputs saveAndContinue(const std::string& name, const std::string& model,
   }
   {
     Study a = open(dir, "m.adm", "a");
-    if (!integrator.empty()) EXPECT_TRUE(command(a, integrator));
+    if (!integrator.empty()) {
+      EXPECT_TRUE(command(a, integrator));
+    }
     EXPECT_TRUE(command(a, "SIMULATE/DYNAMICS, END=1, STEPS=10"));
     EXPECT_TRUE(command(a, "SAVE/" + kind + ", FILE=at1.sav"));
     EXPECT_TRUE(command(a, "STOP"));
@@ -117,7 +121,9 @@ Outputs saveAndContinue(const std::string& name, const std::string& model,
   {
     Study b = open(dir, bModel, "b");
     // RELOAD/SYSTEM brings the integrator command back itself.
-    if (!integrator.empty() && kind == "STATES") EXPECT_TRUE(command(b, integrator));
+    if (!integrator.empty() && kind == "STATES") {
+      EXPECT_TRUE(command(b, integrator));
+    }
     EXPECT_TRUE(command(b, "RELOAD/" + kind + ", FILE=at1.sav"));
     EXPECT_DOUBLE_EQ(b.session->state()->t, 1.0);
     EXPECT_TRUE(command(b, "SIMULATE/DYNAMICS, END=2, STEPS=10"));
