@@ -119,8 +119,9 @@ class Reader {
     return static_cast<std::size_t>(n);
   }
   std::string text(std::string_view tag) {
-    const std::size_t n = count(fields("text", 2).at(1));
-    (void)tag;
+    const auto w = fields("text", 2);
+    if (w[0] != tag) fail("expected text " + std::string(tag) + ", found text " + w[0]);
+    const std::size_t n = count(w[1]);
     if (pos_ + n + 1 > text_.size()) fail("the text ends early (truncated)");
     const std::string s(text_.substr(pos_, n));
     for (const char c : s) line_ += c == '\n' ? 1 : 0;
