@@ -136,6 +136,8 @@ bool Session::reload(const language::Statement& c) {
   std::string why;
   const auto file = analysis::decodeSaveFile(readTextFile(path), &why);
   if (!file) {
+    // "line N: what" from the reader becomes "file:N: what".
+    if (why.rfind("line ", 0) == 0) why = why.substr(5);
     error(c, "the save file " + path + " is refused, nothing was reloaded: " + path + ":" + why,
           "Reload a file SAVE wrote with this build and left unchanged.");
     return false;
