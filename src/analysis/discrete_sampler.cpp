@@ -10,7 +10,9 @@
 
 namespace openmss::analysis {
 
-DiscreteSampler::DiscreteSampler(const mechanics::MultibodySystem& system) : system_(system) {
+DiscreteSampler::DiscreteSampler(const mechanics::MultibodySystem& system,
+                                 mechanics::ExpressionRunState* run)
+    : system_(system), run_(run) {
   for (const auto& e : system.model().generalStates)
     if (e.nd > 0 && e.routines && e.routines->hasUpdate()) active_ = true;
 }
@@ -19,14 +21,15 @@ double DiscreteSampler::nextTime(int k) const {
   const model::GeneralStateElement& e = system_.model().generalStates[k];
   if (e.nd == 0 || !e.routines || !e.routines->hasUpdate())
     return std::numeric_limits<double>::infinity();
+  const double last = run_ ? run_->gseLastSample(k) : 0.0;
   double period = 0.0;
-  if (const auto step = e.routines->sampleStep(e.lastSample))
+  if (const auto step = e.routines->sampleStep(last))
     period = *step;
   else if (e.samplePeriod)
-    period = e.samplePeriod->evaluate(nullptr, e.lastSample);
+    period = e.samplePeriod->evaluate(nullptr, last);
   // A period that is not positive would stop time: no further samples.
   if (!(period > 0.0) || !std::isfinite(period)) return std::numeric_limits<double>::infinity();
-  return e.lastSample + period;
+  return last + period;
 }
 
 double DiscreteSampler::nextTime() const {
@@ -50,14 +53,13 @@ void DiscreteSampler::sample(double t, Eigen::VectorXd& y, Eigen::VectorXd& yp) 
     for (int c = 0; c < e.ns; ++c) x[c] = y(mechanics::gseStateColumn(m, l, k, c));
     for (int c = 0; c < e.ni; ++c) u[c] = y(mechanics::gseInputColumn(m, l, k, c));
     updated[k].assign(static_cast<size_t>(e.nd), 0.0);
-    const user::GseArguments a{t, x.data(), e.discrete.data(), u.data(), false};
+    const user::GseArguments a{t, x.data(), run_->gseDiscrete(k).data(), u.data(), false};
     e.routines->update(a, updated[k].data());
   }
   for (size_t k = 0; k < updated.size(); ++k) {
     if (updated[k].empty()) continue;
-    m.generalStates[k].discrete = updated[k];
     // The scheduled time, not t: no drift of the sample grid from rounding.
-    m.generalStates[k].lastSample = scheduled[k];
+    run_->setGseSample(static_cast<int>(k), updated[k], scheduled[k]);
   }
   // Outputs, rates and accelerations that read xd jump with it.
   Eigen::VectorXd yc = y, ypc = yp;

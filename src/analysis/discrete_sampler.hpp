@@ -4,7 +4,8 @@
 // SAMPLE_PERIOD at t_k. At a sample the integrator stops exactly there, every due GSE gets
 // xd <- GSE_UPDATE(x, xd, u, t_k) (all from the values before any of them changes), the
 // states that depend on xd are made consistent, and the integrator restarts. Between samples
-// xd is constant; at a sample time the outputs already show the new value.
+// xd is constant; at a sample time the outputs already show the new value. xd and t_k live in
+// the run state (mechanics/expression_run_state.hpp).
 
 #include <Eigen/Dense>
 
@@ -14,7 +15,9 @@ namespace openmss::analysis {
 
 class DiscreteSampler {
  public:
-  explicit DiscreteSampler(const mechanics::MultibodySystem& system);
+  // `run` holds the discrete states and sample times; without it only active() is meaningful.
+  explicit DiscreteSampler(const mechanics::MultibodySystem& system,
+                           mechanics::ExpressionRunState* run = nullptr);
 
   bool active() const { return active_; }
   // The earliest next sample time of all GSEs (infinity when none).
@@ -25,6 +28,7 @@ class DiscreteSampler {
  private:
   double nextTime(int k) const;
   const mechanics::MultibodySystem& system_;
+  mechanics::ExpressionRunState* run_;
   bool active_ = false;
 };
 

@@ -39,11 +39,11 @@ void writeStatistics(const AnalysisContext& run, const solvers::IntegratorStatis
 }
 
 // HSIZE, ORDER, NJAC, NRHS read by REQUEST functions: the numbers the .msg prints.
-void publishStatus(const model::Model& m, const solvers::IntegratorStatistics& st) {
-  m.analysisStatus.stepSize = st.stepSize;
-  m.analysisStatus.order = st.order;
-  m.analysisStatus.jacobianEvaluations = st.jacobianEvaluations;
-  m.analysisStatus.residualEvaluations = st.residualEvaluations;
+void publishStatus(model::AnalysisStatus& status, const solvers::IntegratorStatistics& st) {
+  status.stepSize = st.stepSize;
+  status.order = st.order;
+  status.jacobianEvaluations = st.jacobianEvaluations;
+  status.residualEvaluations = st.residualEvaluations;
 }
 
 }  // namespace
@@ -79,12 +79,12 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
   if (m.debug.eprint) eprint.attach(*method);  // observers live on the method itself
   integrator.start(s.t, s.y, s.yp);
   // SENSOR events are checked after every step; a sensor's DT= moves the output grid.
-  SensorMonitor sensors(run.system);
+  SensorMonitor sensors(run.system, *s.expressions);
   sensors.start(s.t, s.y, s.yp);
   OutputGrid grid{t0, outStep, end, 0, nOut};
   const long logEvery = std::max(1L, nOut / 10);
   // GSE discrete states: the integrator stops at each sample.
-  const DiscreteSampler sampler(run.system);
+  const DiscreteSampler sampler(run.system, s.expressions.get());
   for (long i = 1; i <= grid.count; ++i) {
     const double t = grid.time(i);
     const double sampleTime = sampler.active() ? sampler.nextTime() : t + 1.0;
@@ -92,7 +92,7 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
     const double target = sampleFirst ? std::min(t, sampleTime) : t;
     const bool ok = sensors.advanceTo(integrator, target);
     const auto& st = integrator.statistics();
-    publishStatus(m, st);
+    publishStatus(s.expressions->status(), st);
     showIntegratorWarnings();
     if (!ok) {
       // Name the request file only when one was written (OUTPUT/REQSAVE and at least one
@@ -109,7 +109,7 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
       return false;
     }
     if (const SensorEvent* ev = sensors.event()) {
-      for (const auto& line : describeSensorEvent(m, *ev)) run.report.line(line);
+      for (const auto& line : describeSensorEvent(m, *ev, *s.expressions)) run.report.line(line);
       if (ev->print || ev->endsSimulation())
         if (!run.writeOutputStep(ev->time, ev->y, ev->yp)) return false;
       if (ev->endsSimulation()) {  // the integrator was restarted at the event

@@ -106,12 +106,11 @@ bool reportAssembly(const AnalysisContext& run, const mechanics::AssemblyResult&
 }
 
 bool solveInitialConditions(const AnalysisContext& run) {
-  const model::Model& m = run.model;
   mechanics::MultibodySystem& system = run.system;
   RunState& s = run.state;
   run.report.line("");
   run.report.line(" Begin initial conditions (time " + formatNumber("%.6E", s.t) + ")");
-  m.analysisStatus.mode = model::AnalysisMode::InitialConditions;  // MODE = 3
+  run.state.expressions->status().mode = model::AnalysisMode::InitialConditions;  // MODE = 3
   const mechanics::AssemblyResult assembly = assembleForInitialConditions(run);
   if (!reportAssembly(run, assembly)) return false;
   mechanics::solveVelocities(system, s.t, s.y, /*holdJointInitialConditions=*/true);
@@ -146,8 +145,8 @@ bool runInitialConditions(const AnalysisContext& run, const InitialConditionsRun
   const model::Model& m = run.model;
   RunState& s = run.state;
   s.summary.analysis = "initial conditions";
-  m.analysisStatus.mode = model::AnalysisMode::InitialConditions;  // MODE = 3
-  m.analysisStatus.clearIntegrator();
+  run.state.expressions->status().mode = model::AnalysisMode::InitialConditions;  // MODE = 3
+  run.state.expressions->status().clearIntegrator();
   if (settings.last == InitialConditionsPhase::Acceleration) {
     if (!solveInitialConditions(run)) return false;
     // Residual checks of the linear phases against VERROR and AERROR.

@@ -61,6 +61,8 @@ bool runKinematics(const AnalysisContext& run, const TransientRun& settings) {
           return false;
         }
         s.t = tj;
+        // A converged sub-step is an accepted state: COUPLER/GEAR turns counted from it.
+        s.expressions->commitCoupledAngles(run.system, s.y);
       }
     }
     mechanics::solveVelocities(run.system, t, s.y);

@@ -45,8 +45,8 @@ bool runLinear(const AnalysisContext& run, const LinearRun& settings) {
     if (!solveInitialConditions(run)) return false;
     s.initialized = false;
   }
-  m.analysisStatus.mode = model::AnalysisMode::Linear;  // MODE = 7
-  m.analysisStatus.clearIntegrator();
+  run.state.expressions->status().mode = model::AnalysisMode::Linear;  // MODE = 7
+  run.state.expressions->status().clearIntegrator();
   Eigen::VectorXd y = s.y, yp = s.yp;
   // Multipliers and accelerations consistent with these positions and velocities: the
   // projected linearisation is exact only where the residual vanishes.

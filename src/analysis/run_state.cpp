@@ -6,6 +6,8 @@ RunState::RunState(mechanics::MultibodySystem& system)
     : y(system.initialState()),
       expressions(std::make_unique<mechanics::ExpressionRunState>(system.model())) {
   yp = Eigen::VectorXd::Zero(y.size());
+  // The COUPLER/GEAR turn counts' storage before the equations are bound to it.
+  expressions->trackCoupledAngles(system.constraints());
   system.setRunState(expressions.get());
 }
 

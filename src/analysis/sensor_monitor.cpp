@@ -31,7 +31,9 @@ enum Mode : int {
 
 }  // namespace
 
-SensorMonitor::SensorMonitor(const mechanics::MultibodySystem& system) : system_(system) {
+SensorMonitor::SensorMonitor(const mechanics::MultibodySystem& system,
+                             mechanics::ExpressionRunState& run)
+    : system_(system), run_(run) {
   const model::Model& m = system.model();
   for (size_t k = 0; k < m.sensors.size(); ++k) {
     sensors_.push_back(static_cast<int>(k));
@@ -214,7 +216,7 @@ bool SensorMonitor::checkLastStep(solvers::Integrator& integrator) {
   }
   for (int k : ev.sensors)
     if (const Sensor& s = m.sensors[k]; s.evaluate)
-      s.evaluatedValue = evaluateOn(system_, *s.evaluate, eventTime, ev.y, ev.yp);
+      run_.setSensorValue(k, evaluateOn(system_, *s.evaluate, eventTime, ev.y, ev.yp));
 
   if (restart) {
     // Restart at order 1 from the consistent event state (solvers::Integrator::start).
@@ -231,7 +233,8 @@ bool SensorMonitor::checkLastStep(solvers::Integrator& integrator) {
   return true;
 }
 
-std::vector<std::string> describeSensorEvent(const model::Model& m, const SensorEvent& ev) {
+std::vector<std::string> describeSensorEvent(const model::Model& m, const SensorEvent& ev,
+                                             const mechanics::ExpressionRunState& run) {
   auto fmt = [](double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.6E", v);
@@ -251,7 +254,7 @@ std::vector<std::string> describeSensorEvent(const model::Model& m, const Sensor
     add(s.restart, "RESTART");
     add(s.outputInterval.has_value(), "DT=" + (s.outputInterval ? fmt(*s.outputInterval) : ""));
     add(s.stepSize.has_value(), "STEPSIZE=" + (s.stepSize ? fmt(*s.stepSize) : ""));
-    add(s.evaluate.has_value(), "EVALUATE (SENVAL = " + fmt(s.evaluatedValue) + ")");
+    add(s.evaluate.has_value(), "EVALUATE (SENVAL = " + fmt(run.sensorValue(ev.sensors[q])) + ")");
     lines.push_back("   SENSOR/" + std::to_string(s.id) + " event at time " + fmt(ev.time) +
                     ": FUNCTION = " + fmt(ev.functionValues[q]) + " (" + test + " VALUE = " +
                     fmt(s.value) + ", ERROR = " + fmt(s.error) + "); actions: " +

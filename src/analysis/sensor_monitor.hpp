@@ -34,7 +34,8 @@ struct SensorEvent {
 
 class SensorMonitor {
  public:
-  explicit SensorMonitor(const mechanics::MultibodySystem& system);
+  // `run` receives the EVALUATE values (SENVAL) at events.
+  SensorMonitor(const mechanics::MultibodySystem& system, mechanics::ExpressionRunState& run);
 
   bool active() const { return !sensors_.empty(); }
   // Records which tests hold at the start of the run: a sensor acts only when its test starts
@@ -65,6 +66,7 @@ class SensorMonitor {
   void consistentState(double t, Eigen::VectorXd& y, Eigen::VectorXd& yp) const;
 
   const mechanics::MultibodySystem& system_;
+  mechanics::ExpressionRunState& run_;
   std::vector<int> sensors_;  // all of Model::sensors
   bool needsDynamics_ = false;
   std::vector<bool> holds_;     // test state at checkedTime_
@@ -75,7 +77,8 @@ class SensorMonitor {
 
 // The .msg lines of an event: which sensors fired, when, their function values and what they
 // did.
-std::vector<std::string> describeSensorEvent(const model::Model& model, const SensorEvent& event);
+std::vector<std::string> describeSensorEvent(const model::Model& model, const SensorEvent& event,
+                                             const mechanics::ExpressionRunState& run);
 
 // The output times of one SIMULATE: base + k * step, the last one exactly END. A sensor's
 // DT= moves the base to the event and changes the step for the rest of the command.

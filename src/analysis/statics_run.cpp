@@ -107,8 +107,9 @@ bool runStatics(const AnalysisContext& run, const StaticsRun& settings) {
                   ", TLIMIT = " + formatNumber("%.3E", e.translationLimit) +
                   ", ALIMIT = " + formatNumber("%.3E", e.angleLimit) + " rad");
   s.summary.analysis = end ? "quasi-static" : "static";
-  m.analysisStatus.mode = end ? model::AnalysisMode::QuasiStatics : model::AnalysisMode::Statics;
-  m.analysisStatus.clearIntegrator();
+  run.state.expressions->status().mode =
+      end ? model::AnalysisMode::QuasiStatics : model::AnalysisMode::Statics;
+  run.state.expressions->status().clearIntegrator();
   bool ok = staticEquilibriumAt(run, s.t);
   const double t0 = s.t;
   const long nOut = end ? settings.outputSteps : 0;
@@ -129,6 +130,8 @@ bool runStatics(const AnalysisContext& run, const StaticsRun& settings) {
       return false;
     }
     ok = staticEquilibriumAt(run, t);
+    // Each converged point is an accepted state: COUPLER/GEAR turns counted from it.
+    if (ok) s.expressions->commitCoupledAngles(run.system, s.y);
   }
   s.summary.time = s.t;
   if (!ok) return false;

@@ -47,14 +47,13 @@ bool runTransient(const AnalysisContext& run, const TransientRun& settings) {
 }
 
 bool beginTransient(const AnalysisContext& run, bool kinematic) {
-  const model::Model& m = run.model;
   RunState& s = run.state;
   // MODE of this analysis (its first output step included); HSIZE, ORDER, NJAC and NRHS count
   // from zero for each SIMULATE, as the integrator's statistics do.
   const auto enterAnalysisMode = [&]() {
-    m.analysisStatus.mode =
+    run.state.expressions->status().mode =
         kinematic ? model::AnalysisMode::Kinematics : model::AnalysisMode::Dynamics;
-    m.analysisStatus.clearIntegrator();
+    run.state.expressions->status().clearIntegrator();
   };
   if (!s.initialized) {
     s.expressions->reset();  // a new run: no turns counted, no DELAY history

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "analysis/initial_conditions_run.hpp"
 #include "analysis/linear_run.hpp"
@@ -10,6 +11,7 @@
 #include "analysis/statics_run.hpp"
 #include "analysis/transient_run.hpp"
 #include "commands/linear_command.hpp"
+#include "commands/save_reload_command.hpp"
 #include "commands/simulate_command.hpp"
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
@@ -63,7 +65,10 @@ void Session::error(const language::Statement& s, const std::string& message,
   diagnostic(d);
 }
 
-void Session::echoCommand(const std::string& text) { msg_.line(" command: " + text); }
+void Session::echoCommand(const std::string& text) {
+  msg_.line(" command: " + text);
+  pendingEcho_.push_back(text);  // SAVE/SYSTEM's command history (save_reload_command.cpp)
+}
 
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
   prefix_ = outputPrefix;
@@ -84,6 +89,8 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   language::Dataset dataset;
   Diagnostics readDiags;
   language::readDatasetFile(path, dataset, readDiags);
+  datasetText_ = readTextFile(path);  // SAVE/SYSTEM (save_reload_command.hpp)
+  commandHistory_.clear();
   // A model loaded at the prompt after a run starts afresh; the old run state and system
   // refer to the model about to be replaced.
   state_.reset();
@@ -123,6 +130,13 @@ void Session::stop() {
 }
 
 bool Session::execute(const language::Statement& c) {
+  const std::vector<std::string> echo = std::exchange(pendingEcho_, {});
+  const bool ok = dispatch(c);
+  if (ok) recordCommand(c, echo);  // SAVE/SYSTEM replays model-changing commands
+  return ok;
+}
+
+bool Session::dispatch(const language::Statement& c) {
   if (c.name == "STOP") {
     stop();
     return true;
@@ -139,6 +153,7 @@ bool Session::execute(const language::Statement& c) {
     return setAnalysisParameters(c);
   if (c.name == "LINEAR") return linear(c);
   if (c.name == "DEBUG") return setDebug(c);
+  if (c.name == "SAVE" || c.name == "RELOAD") return saveOrReload(c);
   error(c, c.name + " is not supported yet by the solver",
         "README.md lists the supported commands; remove this one or run it elsewhere.");
   return false;

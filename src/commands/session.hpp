@@ -11,6 +11,7 @@
 #include "analysis/analysis_context.hpp"
 #include "analysis/run_report.hpp"
 #include "analysis/run_state.hpp"
+#include "analysis/save_file.hpp"
 #include "common/diagnostics.hpp"
 #include "language/dataset.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -54,6 +55,14 @@ class Session final : private analysis::RunReport {
 
  private:
   analysis::AnalysisContext context();
+  bool dispatch(const language::Statement& command);
+  // SAVE/STATES, SAVE/SYSTEM, RELOAD/STATES, RELOAD/SYSTEM (save_reload_command.cpp).
+  bool saveOrReload(const language::Statement& command);
+  bool save(const language::Statement& command);
+  bool reload(const language::Statement& command);
+  bool reloadSystem(const language::Statement& command, const analysis::SaveFile& file);
+  bool switchOutputPrefix(const language::Statement& command);
+  void recordCommand(const language::Statement& command, const std::vector<std::string>& echo);
   bool simulate(const language::Statement& command);
   bool linear(const language::Statement& command);
   void stop();
@@ -87,6 +96,10 @@ class Session final : private analysis::RunReport {
   std::unique_ptr<mechanics::MultibodySystem> system_;
   std::unique_ptr<analysis::RunState> state_;
   bool stopped_ = false;
+  // For SAVE/SYSTEM (save_reload_command.cpp): the data set's text as loaded, and the
+  // model-changing commands since, as echoed (pendingEcho_: the echo of the command at hand).
+  std::string datasetText_;
+  std::vector<std::string> commandHistory_, pendingEcho_;
   double progressStart_ = 0.0, progressLast_ = 0.0;  // steady-clock seconds
 };
 

@@ -22,6 +22,9 @@ class DelayHistory {
   std::size_t size() const { return times_.size(); }
   double startTime() const { return times_.front(); }  // precondition: !empty()
   double lastTime() const { return times_.back(); }    // precondition: !empty()
+  // The records, oldest first (a SAVE file holds them; record() them back in order).
+  const std::vector<double>& times() const { return times_; }
+  const std::vector<double>& values() const { return values_; }
 
   // The cubic through the four records nearest s (two on each side where there are; fewer
   // when the history has fewer), its value and slope at s. Between records this is order-3

@@ -44,7 +44,7 @@ std::vector<StatementSpec> finalCommandTable() {
   // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
   markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "WSTIFF", "DSTIFF", "SIMULATE", "STOP",
                     "FILE", "HELP", "EQUILIBRIUM", "IC", "KINEMATICS", "LINEAR",
-                    "DEBUG"});
+                    "DEBUG", "SAVE", "RELOAD"});
   return t;
 }
 

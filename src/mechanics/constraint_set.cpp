@@ -138,7 +138,6 @@ ConstraintEquation::CoupledTerm coupledTerm(const model::Model& model, int joint
   t.scale = scale;
   t.reference = rotation ? std::atan2(dot(f[0].a.c[0], f[1].a.c[1]), dot(f[0].a.c[0], f[1].a.c[0]))
                          : dot(f[1].a.c[2], f[0].p - f[1].p);
-  t.lastAngle = t.reference;
   return t;
 }
 
@@ -378,6 +377,17 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
     eqs_.push_back(gearEquation(model, k));
   for (int k = 0; k < static_cast<int>(model.gcons.size()); ++k)
     eqs_.push_back(generalEquation(model, k));
+  // Coupled rotation terms in equation order: their committed angles' places in the run state.
+  int slot = 0;
+  for (ConstraintEquation& e : eqs_)
+    for (ConstraintEquation::CoupledTerm& t : e.terms)
+      if (t.rotation) t.slot = slot++;
+}
+
+void ConstraintSet::bindCoupledAngles(const double* angles) {
+  for (ConstraintEquation& e : eqs_)
+    for (ConstraintEquation::CoupledTerm& t : e.terms)
+      t.committed = t.slot >= 0 && angles ? angles + t.slot : nullptr;
 }
 
 std::string ConstraintSet::describe(int k, const model::Model& model) const {

@@ -33,13 +33,19 @@ struct ConstraintEquation {
   // Coupled: one joint displacement of marker pair `pair` (0: iMarker, jMarker; 1, 2: the pairs
   // in moreMarkers), the rotation of x_I about z_J from x_J or the translation z_J.(P_I - P_J),
   // measured from `reference` (its value at the data set's configuration). Rotations are
-  // unwrapped against `lastAngle`, the last value seen, so that whole turns accumulate.
+  // unwrapped against the cumulative angle committed at the last accepted state, so that whole
+  // turns accumulate: run-state storage (ExpressionRunState::coupledAngles, entry `slot`)
+  // that `committed` points into once MultibodySystem::setRunState has bound it (null: the
+  // data set's angle). Evaluations only read it, so Newton trials and rejected steps never
+  // move the turn count; the driver commits after each accepted step (docs/theory.md §5b).
   struct CoupledTerm {
     int pair = 0;
     bool rotation = true;
     double scale = 1.0;
     double reference = 0.0;
-    mutable double lastAngle = 0.0;
+    int slot = -1;                      // rotation terms: 0, 1, ... over the whole set
+    const double* committed = nullptr;  // run-state storage of this term's committed angle
+    double unwrapReference() const { return committed ? *committed : reference; }
   };
   Kind kind = Kind::Point;
   int axisI = 0;
@@ -86,6 +92,8 @@ class ConstraintSet {
 
   const std::vector<ConstraintEquation>& equations() const { return eqs_; }
   std::vector<ConstraintEquation>& equations() { return eqs_; }
+  // Points each coupled rotation term at angles[term.slot] (null: unbind), see CoupledTerm.
+  void bindCoupledAngles(const double* angles);
   int size() const { return static_cast<int>(eqs_.size()); }
   // "JOINT/1 (REVOLUTE) equation Zi.Xj"
   std::string describe(int k, const model::Model& model) const;
@@ -184,8 +192,7 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
           q = atan2Of(dot(fi.a.c[0], fj.a.c[1]), dot(fi.a.c[0], fj.a.c[0]));
           // Whole turns: the rounding is locally constant, derivatives pass through.
           const double twoPi = 2.0 * std::numbers::pi;
-          q = q + twoPi * std::round((term.lastAngle - valueOf(q)) / twoPi);
-          term.lastAngle = valueOf(q);
+          q = q + twoPi * std::round((term.unwrapReference() - valueOf(q)) / twoPi);
         } else {
           q = dot(fj.a.c[2], fi.p - fj.p);
         }

@@ -67,7 +67,9 @@ class CoordinatePartitioning {
   std::vector<int> independent_;  // the rest
   Eigen::VectorXd reference_;     // full state at partitioning
   double referencePivotRatio_ = 1.0;
-  mutable Eigen::VectorXd zLast_;  // last recovered z: Newton's starting guess
+  // The method's working state (one partitioning per ABAM integrator, so per SIMULATE), not
+  // run data of the model: the last recovered z, Newton's starting guess.
+  mutable Eigen::VectorXd zLast_;
   mutable long positionIterations_ = 0;
 };
 

@@ -1,5 +1,8 @@
 #include "mechanics/expression_run_state.hpp"
 
+#include <algorithm>
+#include <limits>
+
 #include "mechanics/multibody_system.hpp"
 
 namespace openmss::mechanics {
@@ -28,6 +31,37 @@ ExpressionRunState::ExpressionRunState(const model::Model& m) {
     addFunction(s.function);
     if (s.evaluate) addFunction(*s.evaluate);
   }
+  sensorValues_.assign(m.sensors.size(), 0.0);
+  for (const auto& e : m.generalStates) {
+    gseDiscrete_.emplace_back(e.icd.data(), e.icd.data() + e.icd.size());
+    gseLastSample_.push_back(0.0);
+  }
+}
+
+void ExpressionRunState::trackCoupledAngles(const ConstraintSet& constraints) {
+  coupledSlots_.clear();
+  coupledStart_.clear();
+  const auto& eqs = constraints.equations();
+  for (std::size_t k = 0; k < eqs.size(); ++k)
+    for (std::size_t n = 0; n < eqs[k].terms.size(); ++n) {
+      const ConstraintEquation::CoupledTerm& term = eqs[k].terms[n];
+      if (term.slot < 0) continue;
+      if (static_cast<std::size_t>(term.slot) != coupledSlots_.size())
+        continue;  // numbered in order
+      coupledSlots_.push_back({static_cast<int>(k), static_cast<int>(n)});
+      coupledStart_.push_back(term.reference);
+    }
+  coupled_ = coupledStart_;
+}
+
+void ExpressionRunState::commitCoupledAngles(const MultibodySystem& system,
+                                             const Eigen::VectorXd& y) {
+  const auto& eqs = system.constraints().equations();
+  // Each term's cumulative angle at y, unwrapped against the committed value (geometry of the
+  // term alone); the buffer is written in place (the equations hold a pointer into it).
+  for (std::size_t s = 0; s < coupledSlots_.size(); ++s)
+    coupled_[s] = system.coupledAngle(eqs[static_cast<std::size_t>(coupledSlots_[s].equation)],
+                                      coupledSlots_[s].term, y.data());
 }
 
 void ExpressionRunState::addFunction(const model::BoundExpression& f) {
@@ -45,6 +79,7 @@ void ExpressionRunState::addFunction(const model::BoundExpression& f) {
 void ExpressionRunState::reset() {
   for (Angle& a : angles_) a.set = false;
   for (Delay& d : delays_) d.history.clear();
+  std::copy(coupledStart_.begin(), coupledStart_.end(), coupled_.begin());
 }
 
 void ExpressionRunState::accept(const MultibodySystem& system, double t, const Eigen::VectorXd& y,
@@ -73,6 +108,49 @@ void ExpressionRunState::accept(const MultibodySystem& system, double t, const E
     angles_[k].set = true;
   }
   for (std::size_t k = 0; k < delays_.size(); ++k) delays_[k].history.record(t, delayed[k]);
+  commitCoupledAngles(system, y);
+}
+
+ExpressionRunState::Snapshot ExpressionRunState::snapshot() const {
+  Snapshot s;
+  for (const Angle& a : angles_)
+    s.angleReferences.push_back(a.set ? a.reference : std::numeric_limits<double>::quiet_NaN());
+  for (const Delay& d : delays_) {
+    std::vector<std::pair<double, double>> records;
+    for (std::size_t k = 0; k < d.history.size(); ++k)
+      records.emplace_back(d.history.times()[k], d.history.values()[k]);
+    s.delays.push_back(std::move(records));
+  }
+  s.coupled = coupled_;
+  s.sensorValues = sensorValues_;
+  s.gseLastSample = gseLastSample_;
+  s.gseDiscrete = gseDiscrete_;
+  s.status = status_;
+  return s;
+}
+
+bool ExpressionRunState::restore(const Snapshot& s) {
+  if (s.angleReferences.size() != angles_.size() || s.delays.size() != delays_.size() ||
+      s.coupled.size() != coupled_.size() || s.sensorValues.size() != sensorValues_.size() ||
+      s.gseLastSample.size() != gseLastSample_.size() ||
+      s.gseDiscrete.size() != gseDiscrete_.size())
+    return false;
+  for (std::size_t k = 0; k < gseDiscrete_.size(); ++k)
+    if (s.gseDiscrete[k].size() != gseDiscrete_[k].size()) return false;
+  for (std::size_t k = 0; k < angles_.size(); ++k) {
+    angles_[k].set = !std::isnan(s.angleReferences[k]);
+    angles_[k].reference = angles_[k].set ? s.angleReferences[k] : 0.0;
+  }
+  for (std::size_t k = 0; k < delays_.size(); ++k) {
+    delays_[k].history.clear();
+    for (const auto& [t, v] : s.delays[k]) delays_[k].history.record(t, v);
+  }
+  std::copy(s.coupled.begin(), s.coupled.end(), coupled_.begin());  // in place: see above
+  sensorValues_ = s.sensorValues;
+  gseLastSample_ = s.gseLastSample;
+  gseDiscrete_ = s.gseDiscrete;
+  status_ = s.status;
+  return true;
 }
 
 const double* ExpressionRunState::angleReference(const model::Measure& ms) const {

@@ -1,10 +1,14 @@
 #pragma once
-// History that function expressions need beyond the current state (docs/theory.md §11a): the
-// reference angle of each cumulative AX/AY/AZ and the recorded past of each DELAY argument.
-// The run state (analysis/run_state.hpp) owns one, next to the accepted state, and updates it only
-// after accepted steps (accept), so rejected steps and corrector iterations never change it and
-// a run repeated gives bit-identical results. The Model stays immutable: evaluation receives
-// the run state through MultibodySystem::setRunState, never through the Model.
+// Everything the equations read beyond the current state (docs/theory.md §11a, "Run state"):
+// the reference angle of each cumulative AX/AY/AZ, the recorded past of each DELAY argument,
+// the committed cumulative angle of each COUPLER/GEAR rotation term (whole turns), the SENVAL
+// value of each SENSOR, the GSE discrete states and their last sample times, and the analysis
+// status MODE/HSIZE/ORDER/NJAC/NRHS read. The run state (analysis/run_state.hpp) owns one,
+// next to the accepted state. The angles and DELAY histories change only after accepted steps
+// (accept), so rejected steps and corrector iterations never change them and a run repeated
+// gives bit-identical results; the others are written by the analysis drivers only (sensor
+// events, GSE samples, the start of an analysis). The Model stays immutable: evaluation
+// receives the run state through MultibodySystem::setRunState, never through the Model.
 
 #include <Eigen/Dense>
 #include <cmath>
@@ -14,11 +18,13 @@
 #include "common/dual.hpp"
 #include "expr/delay_history.hpp"
 #include "expr/run_context.hpp"
+#include "model/analysis_status.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
 
 class MultibodySystem;
+class ConstraintSet;
 
 class ExpressionRunState final : public expr::RunContext {
  public:
@@ -42,6 +48,42 @@ class ExpressionRunState final : public expr::RunContext {
   std::size_t angleCount() const { return angles_.size(); }
   std::size_t delayCount() const { return delays_.size(); }
 
+  // COUPLER/GEAR rotation terms (ConstraintEquation::CoupledTerm::slot numbers them): the
+  // cumulative angle committed at the last accepted state, against which the residual counts
+  // whole turns. Starts at each term's data-set angle; accept() commits, reset() restores.
+  void trackCoupledAngles(const ConstraintSet& constraints);
+  const std::vector<double>& coupledAngles() const { return coupled_; }
+  // Commits the coupled angles at y only (statics and kinematics call accept, which does too).
+  void commitCoupledAngles(const MultibodySystem& system, const Eigen::VectorXd& y);
+
+  // SENVAL(id): the EVALUATE value of SENSOR k's last event (0 before any).
+  double sensorValue(int k) const { return sensorValues_[static_cast<std::size_t>(k)]; }
+  void setSensorValue(int k, double v) { sensorValues_[static_cast<std::size_t>(k)] = v; }
+  // GSE k's discrete states xd and the time of its last sample (analysis/discrete_sampler).
+  const std::vector<double>& gseDiscrete(int k) const {
+    return gseDiscrete_[static_cast<std::size_t>(k)];
+  }
+  double gseLastSample(int k) const { return gseLastSample_[static_cast<std::size_t>(k)]; }
+  void setGseSample(int k, std::vector<double> xd, double t) {
+    gseDiscrete_[static_cast<std::size_t>(k)] = std::move(xd);
+    gseLastSample_[static_cast<std::size_t>(k)] = t;
+  }
+  // MODE, HSIZE, ORDER, NJAC, NRHS (model/analysis_status.hpp): set by the analysis drivers.
+  const model::AnalysisStatus& status() const { return status_; }
+  model::AnalysisStatus& status() { return status_; }
+
+  // The whole history as flat numbers, in a fixed order (analysis/save_file.hpp writes and
+  // reads it): restore() refuses (returns false, nothing changed) a list of other sizes.
+  struct Snapshot {
+    std::vector<double> angleReferences;  // NaN: not set
+    std::vector<std::vector<std::pair<double, double>>> delays;
+    std::vector<double> coupled, sensorValues, gseLastSample;
+    std::vector<std::vector<double>> gseDiscrete;
+    model::AnalysisStatus status;
+  };
+  Snapshot snapshot() const;
+  bool restore(const Snapshot& s);
+
  private:
   struct Angle {
     model::Measure measure;
@@ -58,6 +100,16 @@ class ExpressionRunState final : public expr::RunContext {
 
   std::vector<Angle> angles_;
   std::vector<Delay> delays_;
+  // Coupled rotation terms: (equation index, term index) in the constraint set, the committed
+  // cumulative angle and its data-set value.
+  struct CoupledSlot {
+    int equation = 0, term = 0;
+  };
+  std::vector<CoupledSlot> coupledSlots_;
+  std::vector<double> coupled_, coupledStart_;
+  std::vector<double> sensorValues_, gseLastSample_;
+  std::vector<std::vector<double>> gseDiscrete_;
+  model::AnalysisStatus status_;
 };
 
 // The cumulative angle from its principal value: the principal value plus the whole turns

@@ -103,6 +103,7 @@ class ForceElements {
   StateLayout layout_;  // own copy (only body offsets are read): the owner may be moved
   std::vector<ForceElementRef> elements_;
   std::vector<double> angleReference_;  // per SPRINGDAMPER (rotational ones only)
+  // Pure scratch, overwritten by every evaluation: no result depends on earlier contents.
   mutable std::vector<double> scratchValues_, scratchGrad_;
   const ExpressionRunState* run_ = nullptr;  // cumulative angles, DELAY history (the session's)
 

@@ -16,10 +16,14 @@ int gseOutputColumn(const model::Model& m, const StateLayout& l, int k, int j) {
   return l.userAlg(m.generalStates[k].firstOutput + j);
 }
 
+const double* GeneralStateRows::discrete(int k) const {
+  return run_ ? run_->gseDiscrete(k).data() : model_->generalStates[k].icd.data();
+}
+
 void GeneralStateRows::evaluate(int k, double t, const double* x, const double* u, double* xdot,
                                 double* outputs) const {
   const model::GeneralStateElement& e = model_->generalStates[k];
-  user::GseArguments a{t, x, e.discrete.data(), u, false};
+  user::GseArguments a{t, x, discrete(k), u, false};
   if (xdot && e.ns > 0) e.routines->derivatives(a, xdot, nullptr);
   if (outputs && e.no > 0) e.routines->outputs(a, outputs, nullptr);
 }
@@ -34,7 +38,7 @@ const GeneralStateRows::Linearization& GeneralStateRows::linearize(int k, double
   std::vector<double> key{t};
   key.insert(key.end(), x, x + ns);
   key.insert(key.end(), u, u + ni);
-  key.insert(key.end(), e.discrete.begin(), e.discrete.end());
+  key.insert(key.end(), discrete(k), discrete(k) + e.nd);
   Linearization& lin = cache_[static_cast<size_t>(k)];
   if (lin.key == key) return lin;
   lin.key = key;
@@ -42,7 +46,7 @@ const GeneralStateRows::Linearization& GeneralStateRows::linearize(int k, double
   lin.g.assign(no, 0.0);
   // The unperturbed call offers the routines to supply their partials (ADAMS's DFLAG set,
   // ADAMS_NEEDS_PARTIALS true).
-  user::GseArguments a{t, x, e.discrete.data(), u, true};
+  user::GseArguments a{t, x, discrete(k), u, true};
   user::GsePartials pf, pg;
   if (ns > 0) e.routines->derivatives(a, lin.f.data(), &pf);
   if (no > 0) e.routines->outputs(a, lin.g.data(), &pg);

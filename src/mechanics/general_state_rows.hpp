@@ -8,12 +8,15 @@
 // rows get their derivatives from one linearization per state: the routines' own partials
 // (ADAMS_NEEDS_PARTIALS/SYSPAR) where they supply them, central differences of f and g
 // otherwise, cached while the state's values stay the same (every column of one Newton
-// matrix reuses it). xd is a constant between samples (GeneralStateElement::discrete).
+// matrix reuses it; that cache and the x_..g_ buffers are pure scratch: a hit returns the
+// numbers a recomputation gives, so they never change results). xd is a constant between
+// samples, held in the run state (ExpressionRunState::gseDiscrete; the ICD without one).
 
 #include <type_traits>
 #include <vector>
 
 #include "common/dual.hpp"
+#include "mechanics/expression_run_state.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
 
@@ -29,6 +32,9 @@ class GeneralStateRows {
  public:
   explicit GeneralStateRows(const model::Model& model) : model_(&model) {}
   void setLayout(const StateLayout& layout) { layout_ = layout; }
+  void setRunState(const ExpressionRunState* run) { run_ = run; }
+  // GSE k's discrete states xd: the run state's, or its ICD without one.
+  const double* discrete(int k) const;
 
   template <class T>
   void addToResidual(double t, const T* y, const T* yp, T* g) const;
@@ -47,6 +53,7 @@ class GeneralStateRows {
  private:
   const model::Model* model_;
   StateLayout layout_;
+  const ExpressionRunState* run_ = nullptr;
   mutable std::vector<Linearization> cache_;
   mutable std::vector<double> x_, u_, f_, g_;
 };

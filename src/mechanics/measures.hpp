@@ -30,8 +30,8 @@ template <class T>
 bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::Measure& ms,
                       const T* y, T* out, const ExpressionRunState* run = nullptr) {
   using K = model::MeasureKind;
-  if (userMeasure(m, l, ms, y, out)) return true;  // VARVAL, DIF, ARYVAL, ... read the state
-  if (analysisStatusMeasure(m, ms, out)) return true;  // MODE, HSIZE, ORDER, NJAC, NRHS
+  if (userMeasure(m, l, ms, y, out, run)) return true;  // VARVAL, DIF, ARYVAL, ... read y
+  if (analysisStatusMeasure(ms, out, run)) return true;  // MODE, HSIZE, ORDER, NJAC, NRHS
   const MarkerState<T> i = markerOrGround(m, l, ms.i, y);
   const MarkerState<T> j = markerOrGround(m, l, ms.j, y);
   const M3<T> k = ms.k >= 0 ? markerState(m, l, ms.k, y).a

@@ -195,6 +195,16 @@ void MultibodySystem::constraintRow(int k, const double* y, double* row) const {
   constraintRow(constraints_.equations()[k], y, row);
 }
 
+double MultibodySystem::coupledAngle(const ConstraintEquation& eq, int term,
+                                     const double* y) const {
+  // The equation reduced to this one term with unit scale and zero reference is its angle.
+  ConstraintEquation one = eq;
+  one.terms = {eq.terms[static_cast<std::size_t>(term)]};
+  one.terms[0].scale = 1.0;
+  one.terms[0].reference = 0.0;
+  return geometryValue(one, y);
+}
+
 double MultibodySystem::geometryValue(const ConstraintEquation& eq, const double* y) const {
   Frame<double> frames[ConstraintEquation::kMaxMarkers];
   equationFrames(eq, y, frames);

@@ -37,7 +37,11 @@ class MultibodySystem {
     runState_ = run;
     forces_.setRunState(run);
     user_.setRunState(run);
+    constraints_.bindCoupledAngles(run ? run->coupledAngles().data() : nullptr);
   }
+  // The cumulative angle of rotation term `term` of coupled equation `eq` at y, its whole
+  // turns counted against the committed angle (ExpressionRunState::commitCoupledAngles).
+  double coupledAngle(const ConstraintEquation& eq, int term, const double* y) const;
   const ExpressionRunState* runState() const { return runState_; }
   const ConstraintSet& constraints() const { return constraints_; }
   ConstraintSet& constraints() { return constraints_; }
@@ -224,7 +228,8 @@ class MultibodySystem {
   ForceElements forces_;  // applied force elements (one code path for residual and read-back)
   UserEquations user_;    // VARIABLE, DIFF, LSE, TFSISO rows (docs/theory.md §4a)
   // Last motion target per motion (VELOCITY/ACCELERATION motions integrate f by quadrature;
-  // the residual asks for the same time many times per Newton matrix).
+  // the residual asks for the same time many times per Newton matrix). A pure cache: a hit
+  // returns exactly what recomputation would.
   mutable std::vector<std::pair<double, expr::TimeJet>> motionCache_;
 };
 

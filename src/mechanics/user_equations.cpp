@@ -26,8 +26,6 @@ void UserEquations::initialValues(double* y) const {
   for (const model::GeneralStateElement& e : m.generalStates) {
     for (int i = 0; i < e.ns; ++i) y[layout_.userDiff(e.firstState + i)] = e.ic(i);
     for (int j = 0; j < e.no; ++j) y[layout_.userAlg(e.firstOutput + j)] = 0.0;  // solved
-    e.discrete.assign(e.icd.data(), e.icd.data() + e.icd.size());
-    e.lastSample = 0.0;
   }
 }
 

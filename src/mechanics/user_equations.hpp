@@ -39,18 +39,22 @@ class UserEquations {
   // User differential states (index among them) that STATIC_HOLD keeps fixed in statics.
   std::vector<bool> staticHold() const;
   // Initial values: DIFF IC (and IC derivative guess), LSE IC, VARIABLE IC (guess), GSE IC
-  // (and its discrete states back to ICD).
+  // (its discrete states start at ICD in the run state, expression_run_state.hpp).
   void initialValues(double* y) const;
 
  private:
   const model::Model* model_;
   StateLayout layout_;
   GeneralStateRows gse_;
+  // Pure scratch, overwritten by every evaluation: no result depends on earlier contents.
   mutable std::vector<double> scratchValues_, scratchGrad_;
   const ExpressionRunState* run_ = nullptr;  // cumulative angles, DELAY history (the session's)
 
  public:
-  void setRunState(const ExpressionRunState* run) { run_ = run; }
+  void setRunState(const ExpressionRunState* run) {
+    run_ = run;
+    gse_.setRunState(run);
+  }
 };
 
 template <class T>

@@ -3,6 +3,7 @@
 // reads of the state vector (docs/theory.md §4a), templated on the scalar so that functions
 // reading them get exact derivatives.
 
+#include "mechanics/expression_run_state.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
 
@@ -28,14 +29,16 @@ T linearStateOutput(const model::Model& m, const StateLayout& l, int e, int row,
   return out;
 }
 
-// Entry n (0-based) of ARRAY k.
+// Entry n (0-based) of ARRAY k. A GSE's discrete states are the run state's (their ICD
+// without one).
 template <class T>
-T arrayValue(const model::Model& m, const StateLayout& l, int k, int n, const T* y) {
+T arrayValue(const model::Model& m, const StateLayout& l, int k, int n, const T* y,
+             const ExpressionRunState* run) {
   const model::DataArray& a = m.arrays[k];
   if (a.gse >= 0) {  // a GSE's states (XD: discrete, constant between samples) or outputs
     const model::GeneralStateElement& e = m.generalStates[a.gse];
     if (a.kind == model::DataArray::Kind::Y) return y[l.userAlg(e.firstOutput + n)];
-    if (a.discrete) return T(e.discrete[n]);
+    if (a.discrete) return T(run ? run->gseDiscrete(a.gse)[static_cast<std::size_t>(n)] : e.icd(n));
     return y[l.userDiff(e.firstState + n)];
   }
   switch (a.kind) {
@@ -55,7 +58,7 @@ T arrayValue(const model::Model& m, const StateLayout& l, int k, int n, const T*
 // Returns false when `ms` is not a user-equation measure.
 template <class T>
 bool userMeasure(const model::Model& m, const StateLayout& l, const model::Measure& ms, const T* y,
-                 T* out) {
+                 T* out, const ExpressionRunState* run) {
   using K = model::MeasureKind;
   switch (ms.kind) {
     case K::VarVal:
@@ -68,7 +71,7 @@ bool userMeasure(const model::Model& m, const StateLayout& l, const model::Measu
       *out = y[l.userAlg(static_cast<int>(m.variables.size()) + ms.element)];
       return true;
     case K::AryVal:
-      *out = arrayValue(m, l, ms.element, ms.component - 1, y);
+      *out = arrayValue(m, l, ms.element, ms.component - 1, y, run);
       return true;
     case K::PinVal:
       *out = variableValue(l, m.pinputs[ms.element].variables[ms.component - 1], y);
@@ -76,8 +79,8 @@ bool userMeasure(const model::Model& m, const StateLayout& l, const model::Measu
     case K::PouVal:
       *out = variableValue(l, m.poutputs[ms.element].variables[ms.component - 1], y);
       return true;
-    case K::SenVal:  // a constant between sensor events: no derivative
-      *out = T(m.sensors[ms.element].evaluatedValue);
+    case K::SenVal:  // a constant between sensor events (run state): no derivative
+      *out = T(run ? run->sensorValue(ms.element) : 0.0);
       return true;
     default:
       return false;

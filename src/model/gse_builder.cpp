@@ -168,7 +168,6 @@ void UserEquationBuilder::gse(const Statement& s, const std::string& baseDirecto
   for (int a : {e.xArray, e.xdArray, e.yArray})
     if (a >= 0) model_.arrays[a].gse = index;
   if (e.xdArray >= 0) model_.arrays[e.xdArray].discrete = true;
-  e.discrete.assign(e.icd.data(), e.icd.data() + e.icd.size());
   model_.generalStates.push_back(std::move(e));
 }
 

@@ -270,11 +270,8 @@ struct GeneralStateElement {
   std::shared_ptr<const user::GseRoutines> routines;
   int firstState = -1;   // index of x(1) among the user differential states (after LSEs)
   int firstOutput = -1;  // index of y(1) among the user algebraic unknowns (after DIFFs)
-  // The discrete states and the time of the last sample: run-time values written only by
-  // the analysis at sample times (analysis/discrete_sampler.hpp), hence mutable in the
-  // otherwise fixed model, as Sensor::evaluatedValue.
-  mutable std::vector<double> discrete;
-  mutable double lastSample = 0.0;
+  // The discrete states and the time of the last sample are run-time values: the run state's
+  // (mechanics/expression_run_state.hpp), starting at ICD and time 0.
   SourceLocation where;
 };
 
@@ -303,10 +300,9 @@ struct Sensor {
   bool returnToCommands = false;           // RETURN: the SIMULATE command ends at the event
   std::optional<double> outputInterval;    // DT: the output interval from the event on
   std::optional<double> stepSize;          // STEPSIZE: the first step after the event
-  std::optional<BoundExpression> evaluate;  // EVALUATE: stored at the event, read by SENVAL
-  // SENVAL(id): the EVALUATE value of the last event (0 before any). A run-time value written
-  // only by analysis/sensor_monitor.cpp at events, hence mutable in the otherwise fixed model.
-  mutable double evaluatedValue = 0.0;
+  // EVALUATE: stored at the event in the run state (ExpressionRunState::sensorValue), read by
+  // SENVAL (0 before any event).
+  std::optional<BoundExpression> evaluate;
   SourceLocation where;
 };
 
@@ -402,10 +398,8 @@ struct Model {
   std::map<long, int> partIndex, markerIndex, jointIndex;
   std::map<long, int> jprimIndex;
 
-  // MODE, HSIZE, ORDER, NJAC, NRHS: a run-time value written only by the analysis session
-  // before it evaluates expressions (as Sensor::evaluatedValue), hence mutable in the otherwise
-  // fixed model.
-  mutable AnalysisStatus analysisStatus;
+  // MODE, HSIZE, ORDER, NJAC, NRHS are run-time values: the run state's
+  // (ExpressionRunState::status, mechanics/expression_run_state.hpp).
 
   int bodyCount() const { return static_cast<int>(movingParts.size()); }
   // User states (mechanics/state_layout.hpp): differential ones are the DIFF states, then the

@@ -148,11 +148,11 @@ TEST(Run, AnAcfResolvesItsModelBesideItAndWritesToOutdir) {
 TEST(Run, AnUnsupportedCommandStopsTheRunWithItsLine) {
   const fs::path dir = scratch("badcmd");
   write(dir / "pend.adm", kPendulum);
-  write(dir / "pend.acf", "pend\npend\nsave/states\nstop\n");
+  write(dir / "pend.acf", "pend\npend\nautoscale\nstop\n");
   const Result r = run("run pend.acf --quiet", dir);
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("pend.acf:3"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("SAVE is not supported yet"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find("AUTOSCALE is not supported yet"), std::string::npos) << r.output;
   fs::remove_all(dir);
 }
 

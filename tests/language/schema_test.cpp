@@ -67,7 +67,8 @@ TEST(Schema, MarksWhatTheSolverSupports) {
   EXPECT_FALSE(findStatementSpec("CONTACT")->solverSupported);
   EXPECT_TRUE(findCommandSpec("SIMULATE")->solverSupported);
   EXPECT_TRUE(findCommandSpec("LINEAR")->solverSupported);
-  EXPECT_FALSE(findCommandSpec("SAVE")->solverSupported);
+  EXPECT_TRUE(findCommandSpec("SAVE")->solverSupported);
+  EXPECT_FALSE(findCommandSpec("AUTOSCALE")->solverSupported);
   EXPECT_FALSE(findCommandSpec("PART")->solverSupported);
 }
 

@@ -13,6 +13,7 @@
 
 #include "support/newton_matrix_check.hpp"
 #include "language/reader.hpp"
+#include "mechanics/expression_run_state.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
@@ -52,9 +53,14 @@ void checkDerivatives(const MultibodySystem& s, const model::Model& m) {
   testing::checkConstraintRates(s, m, y, 0.0, testing::MotionRates::Skip);
 }
 
-// Kinematic march: predict, assemble, velocities, accelerations at each time.
+// Kinematic march: predict, assemble, velocities, accelerations at each time. Each assembled
+// state is accepted: the coupled angles' whole turns are committed in a run state
+// (mechanics/expression_run_state.hpp), as the analysis drivers do.
 template <class Check>
 void march(MultibodySystem& s, double tEnd, double dt, Check check) {
+  ExpressionRunState run(s.model());
+  run.trackCoupledAngles(s.constraints());
+  s.setRunState(&run);
   Eigen::VectorXd y = s.initialState(), yp;
   removeRedundantConstraints(s, y);
   for (double t = 0.0; t <= tEnd + 1e-12; t += dt) {
@@ -70,7 +76,9 @@ void march(MultibodySystem& s, double tEnd, double dt, Check check) {
     solveVelocities(s, t, y);
     ASSERT_TRUE(solveAccelerations(s, t, y, yp));
     check(t, y, yp);
+    run.commitCoupledAngles(s, y);
   }
+  s.setRunState(nullptr);
 }
 
 // Rotation of body b about ground z (its x axis's angle), and its angular velocity.
