@@ -107,7 +107,9 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
   language::CommandFile cf;
   language::readCommandFile(path, cf, diags);
   printDiagnostics(diags);
-  if (diags.hasErrors()) return RunOutcome::InputError;
+  readErrors_ += diags.errorCount();
+  readWarnings_ += diags.warningCount();
+  if (diags.hasErrors() && !keepGoing_) return RunOutcome::InputError;
 
   const fs::path base = fs::path(path).parent_path();
   if (!cf.modelFile.empty()) {
@@ -132,7 +134,7 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
     const bool loadsModel = c.name == "FILE" && c.has("MODEL");
     if (!execute(c, echo, base)) {
       outcome = loadsModel ? RunOutcome::InputError : RunOutcome::CommandFailed;
-      break;
+      if (!keepGoing_ || loadsModel) break;
     }
     if (session_.stopped()) break;
   }

@@ -46,6 +46,11 @@ class CommandRunner {
   RunOutcome runCommandFile(const std::string& path);
 
   bool modelLoaded() const { return modelLoaded_; }
+  // `openmss check`: a failing command does not end the file, so that every error is
+  // reported; errors of the command file's reading are counted here.
+  void setKeepGoing(bool keepGoing) { keepGoing_ = keepGoing; }
+  int readErrors() const { return readErrors_; }
+  int readWarnings() const { return readWarnings_; }
 
  private:
   bool loadModel(const language::Statement& command, const std::filesystem::path& base);
@@ -53,7 +58,9 @@ class CommandRunner {
   commands::Session& session_;
   std::FILE* helpOut_;
   bool modelLoaded_ = false;
-  int commandFileDepth_ = 0;  // FILE/COMMAND nesting, bounded against a file that runs itself
+  int commandFileDepth_ = 0;
+  bool keepGoing_ = false;
+  int readErrors_ = 0, readWarnings_ = 0;  // FILE/COMMAND nesting, bounded against a file that runs itself
 };
 
 }  // namespace openmss::app
