@@ -58,9 +58,9 @@ class CommandRunner {
   commands::Session& session_;
   std::FILE* helpOut_;
   bool modelLoaded_ = false;
-  int commandFileDepth_ = 0;
+  int commandFileDepth_ = 0;  // FILE/COMMAND nesting, bounded against a file that runs itself
   bool keepGoing_ = false;
-  int readErrors_ = 0, readWarnings_ = 0;  // FILE/COMMAND nesting, bounded against a file that runs itself
+  int readErrors_ = 0, readWarnings_ = 0;
 };
 
 }  // namespace openmss::app

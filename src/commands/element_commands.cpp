@@ -63,10 +63,9 @@ std::string where(const SourceLocation& w) { return w.file + ":" + std::to_strin
 
 bool Session::isElementCommand(const std::string& name) {
   static const std::set<std::string> s = {
-      "ACTIVATE", "DEACTIVATE", "PART",     "MARKER",    "JOINT",  "MOTION",   "GCON",
-      "ACCGRAV",  "BEAM",       "BUSHING",  "FIELD",     "GFORCE", "SFORCE",   "SPRINGDAMPER",
-      "VFORCE",   "VTORQUE",    "ARRAY",    "SPLINE",    "STRING", "VARIABLE", "DIFF",
-      "SENSOR",   "REQUEST",    "FRICTION", "FLEX_BODY", "UCON"};
+      "ACTIVATE", "DEACTIVATE", "PART",   "MARKER",   "JOINT",  "MOTION",       "GCON",   "ACCGRAV",
+      "BEAM",     "BUSHING",    "FIELD",  "GFORCE",   "SFORCE", "SPRINGDAMPER", "VFORCE", "VTORQUE",
+      "ARRAY",    "SPLINE",     "STRING", "VARIABLE", "DIFF",   "SENSOR",       "REQUEST"};
   return s.count(name) > 0;
 }
 

@@ -10,6 +10,7 @@
 #include "analysis/request_values.hpp"
 #include "commands/session.hpp"
 #include "language/schema.hpp"
+#include "model/solver_preferences.hpp"
 
 namespace openmss::commands {
 namespace {
@@ -28,18 +29,6 @@ bool Session::isInformationCommand(const std::string& name) {
 void Session::inform(const std::string& text, bool messageFile) {
   if (messageFile) msg_.line(text);
   if (options_.printInformation) std::printf("%s\n", text.c_str());
-}
-
-void Session::warnOnce(const language::Statement& c, const language::Argument& a,
-                       const std::string& message, const std::string& hint) {
-  if (!warnedOptions_.insert(message).second) return;
-  Diagnostic d;
-  d.severity = Severity::Warning;
-  d.where = a.where;
-  d.subject = c.subject();
-  d.message = message;
-  d.hint = hint;
-  diagnostic(d);
 }
 
 bool Session::informationCommand(const language::Statement& c) {
@@ -142,36 +131,15 @@ bool Session::show(const language::Statement& c) {
 }
 
 // PREFERENCES, LSOLVER, ENVIRONMENT: options that choose solver internals. Those that map onto
-// OpenMSS are honoured; the others warn once each, named, and change nothing (docs/commands.md).
+// OpenMSS are honoured (SIMFAIL=STOPCF); the others warn once each per session, named, and
+// change nothing (model/solver_preferences.hpp, shared with the statements).
 bool Session::preferences(const language::Statement& c) {
-  for (const auto& a : c.args) {
-    if (a.name == "LIST") continue;
-    const std::string given = c.name + "/" + a.name;
-    if (c.name == "PREFERENCES" && a.name == "NTHREADS")
-      warnOnce(c, a, "NTHREADS: OpenMSS solves on one thread (its results do not depend on it)",
-               "Remove NTHREADS to silence this warning.");
-    else if (c.name == "PREFERENCES" && a.name == "SIMFAIL" && !a.values.empty() &&
-             a.values[0].text == "STOPCF")
-      continue;  // what OpenMSS always does: a failed analysis ends the command file
-    else if (c.name == "LSOLVER")
-      warnOnce(c, a,
-               a.name +
-                   ": OpenMSS factors its Newton matrices with its own sparse LU "
-                   "(docs/theory.md); the choice of linear solver has no effect",
-               "Remove the LSOLVER command to silence this warning.");
-    else if (c.name == "ENVIRONMENT" && a.name != "NAME")
-      continue;  // VALUE: named with the variable
-    else if (c.name == "ENVIRONMENT")
-      warnOnce(c, a,
-               "ENVIRONMENT " + (a.values.empty() ? std::string("variable") : a.values[0].text) +
-                   " is not read by OpenMSS and has no effect",
-               "Remove the command to silence this warning.");
-    else
-      warnOnce(c, a, given + " does not apply to OpenMSS and has no effect",
-               "Remove it to silence this warning.");
-  }
-  if (c.has("LIST")) inform(" " + c.name + ": OpenMSS defaults (one thread, sparse LU)");
-  return true;
+  Diagnostics local;
+  model::applySolverPreferences(c, local);
+  for (const auto& d : local.all())
+    if (d.severity != Severity::Warning || warnedOptions_.insert(d.message).second) diagnostic(d);
+  if (c.has("LIST")) inform(" " + c.name + ": OpenMSS defaults (one thread, its own LU)");
+  return !local.hasErrors();
 }
 
 }  // namespace openmss::commands

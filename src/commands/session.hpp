@@ -24,9 +24,9 @@ namespace openmss::commands {
 
 struct SessionOptions {
   std::string outputDirectory = ".";
-  bool progress = false;        // a progress line on the terminal (stderr)
-  bool echoDiagnostics = true;  // print diagnostics on stderr
-  bool printInformation = true; // INFO, SHOW, TIME, MENU also print on stdout
+  bool progress = false;         // a progress line on the terminal (stderr)
+  bool echoDiagnostics = true;   // print diagnostics on stderr
+  bool printInformation = true;  // INFO, SHOW, TIME, MENU also print on stdout
   // `openmss check FILE.acf`: every command is read and checked against the model (ids,
   // arguments, the model each change leaves) but no analysis runs and no file is written;
   // SIMULATE only advances the time to its END.
@@ -88,8 +88,6 @@ class Session final : private analysis::RunReport {
   bool show(const language::Statement& command);
   bool preferences(const language::Statement& command);
   void inform(const std::string& text, bool messageFile = true);
-  void warnOnce(const language::Statement& command, const language::Argument& argument,
-                const std::string& message, const std::string& hint);
   // Reports (and keeps) diagnostics gathered while reading a command.
   void reportAll(const Diagnostics& local);
   void error(const language::Statement& s, const std::string& message, const std::string& hint);
@@ -109,10 +107,10 @@ class Session final : private analysis::RunReport {
   output::MessageLog msg_;
   output::RequestFileWriter req_;
   std::string prefix_;
-  language::Dataset dataset_;   // as read; never edited (model_edits.hpp)
-  ModelEdits pendingEdits_;     // as the commands so far leave the model
-  ModelEdits appliedEdits_;     // as the model_ of the last analysis was built
-  bool editsPending_ = false;   // pendingEdits_ differ from appliedEdits_
+  language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
+  ModelEdits pendingEdits_;    // as the commands so far leave the model
+  ModelEdits appliedEdits_;    // as the model_ of the last analysis was built
+  bool editsPending_ = false;  // pendingEdits_ differ from appliedEdits_
   std::unique_ptr<model::Model> model_;
   std::unique_ptr<mechanics::MultibodySystem> system_;
   std::unique_ptr<analysis::RunState> state_;

@@ -246,6 +246,28 @@ TEST(ElementCommands, RedefinedSForceFunctionMidStudy) {
   std::printf("  redefined SFORCE: %d outputs, worst z error %.3g m\n", compared, worst);
 }
 
+// VARIABLE and PART redefined together: F = VARVAL(1) = 3 N on m = 2 for 0 <= t <= 1, then
+// VARIABLE/1, FUNCTION=-2*TIME and PART/2, MASS=1: a = -2 t, so v(t) = 1.5 - (t^2 - 1) and
+// z(t) = 0.75 + 1.5 (t - 1) - ((t^3 - 1)/3 - (t - 1)).
+TEST(ElementCommands, RedefinedVariableAndPartMassMidStudy) {
+  std::vector<std::string> acf = {
+      "INTEGRATOR/GSTIFF, ERROR=1e-9", "SIMULATE/DYNAMICS, END=1, STEPS=4",
+      "VARIABLE/1, FUNCTION=-2*TIME", "PART/2, MASS=1, LIST", "SIMULATE/DYNAMICS, END=2, STEPS=4"};
+  const Study r =
+      run("variable-mass",
+          freeBody("VARIABLE/1, FUNCTION=3\n"
+                   "SFORCE/1, TRANSLATION, ACTIONONLY, I=20, J=10, FUNCTION=VARVAL(1)\n"),
+          acf);
+  ASSERT_TRUE(r.loaded);
+  ASSERT_EQ(r.results.size(), 5u);
+  for (bool ok : r.results) EXPECT_TRUE(ok);
+  const double expected = 0.75 + 1.5 - (7.0 / 3.0 - 1.0);
+  EXPECT_NEAR(cmPosition(*r.session).z(), expected, 1e-6);
+  EXPECT_DOUBLE_EQ(r.session->model()->parts[1].mass, 1.0);
+  std::printf("  redefined VARIABLE and MASS: z(2) error %.3g m\n",
+              cmPosition(*r.session).z() - expected);
+}
+
 // Issue 15: ACCGRAV added by command (the data set has none), then changed: g1 = 9.81 down z
 // for 1 s, then g2 = 1.62: z(2) = -g1/2 - g1 - g2/2.
 TEST(ElementCommands, AccgravChangedBetweenTwoSimulates) {
