@@ -132,6 +132,8 @@ bool Session::switchElements(const language::Statement& c) {
     else
       next.inactive.insert({kind, id});
   }
+  // Switching elements to the state they are in changes nothing: no reprocessing follows.
+  if (next.inactive == pendingEdits_.inactive) return true;
   return acceptEdits(c, next);
 }
 
