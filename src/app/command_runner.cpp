@@ -115,6 +115,13 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
   if (!cf.modelFile.empty()) {
     const fs::path model = resolveInputPath(cf.modelFile, base, ".adm");
     const std::string prefix = cf.outputPrefix.empty() ? model.stem().string() : cf.outputPrefix;
+    if (!fs::is_regular_file(model)) {  // one clear message, not the checks of an empty model
+      std::fprintf(stderr, "%s:1:1: error: the data set %s does not exist. Check line 1 of the "
+                   "command file; .adm is added when it has no extension\n",
+                   path.c_str(), model.string().c_str());
+      ++readErrors_;
+      return RunOutcome::InputError;
+    }
     modelLoaded_ = session_.loadModel(model.string(), prefix);
     if (!modelLoaded_) {
       std::fprintf(stderr, "openmss: the model %s has errors; nothing was simulated\n",

@@ -72,6 +72,13 @@ TEST(CheckCommandFile, ReportsEveryErrorOfTheModelAndTheCommands) {
   const Result b = run("check b.acf", dir);
   EXPECT_EQ(b.status, 1);
   EXPECT_GE(count(b.output, "bad.adm:"), 1) << b.output;
+
+  // A model that does not exist: one error at line 1 of the command file.
+  write(dir / "n.acf", "nothere\nn\nSIMULATE/STATICS\nSTOP\n");
+  const Result n = run("check n.acf", dir);
+  EXPECT_EQ(n.status, 1);
+  EXPECT_NE(n.output.find("n.acf:1:1: error: the data set"), std::string::npos) << n.output;
+  EXPECT_NE(n.output.find("n.acf: 1 error(s)"), std::string::npos) << n.output;
 }
 
 }  // namespace
