@@ -173,7 +173,10 @@ bool Session::redefine(const language::Statement& c) {
     if (!acceptEdits(c, next)) return false;
   }
   if (c.has("LIST")) {
-    const language::Dataset edited = editedDataset(dataset_, pendingEdits_);
+    // Listed as redefined even while deactivated (the listing then says so).
+    ModelEdits listing = pendingEdits_;
+    const bool inactive = listing.inactive.erase({c.name, c.id.value_or(0)}) > 0;
+    const language::Dataset edited = editedDataset(dataset_, listing);
     bool listed = false;
     for (const auto& s : edited.statements)
       if (s.name == c.name && s.id.value_or(0) == c.id.value_or(0)) {
@@ -181,8 +184,7 @@ bool Session::redefine(const language::Statement& c) {
         listed = true;
       }
     if (!listed) msg_.line(" " + c.subject() + ": not in the data set (defaults apply)");
-    if (pendingEdits_.inactive.count({c.name, c.id.value_or(0)}))
-      msg_.line(" " + c.subject() + " is deactivated");
+    if (inactive) msg_.line(" " + c.subject() + " is deactivated");
   }
   return true;
 }
