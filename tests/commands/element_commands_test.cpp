@@ -296,6 +296,32 @@ TEST(ElementCommands, RedefinedVariableAndPartMassMidStudy) {
               cmPosition(*r.session).z() - expected);
 }
 
+// PART/id, CM= moves the body frame: the carried state is that of the new CM marker, a point
+// of the same moving body. A free symmetric body (no gravity) translating at VX = 1 and
+// spinning at WZ = 2 turns by 1 rad in 0.5 s; the marker d = (1, 0, 0) from the old CM is then
+// at (0.5 + cos 1, sin 1, 0) with velocity v + w x d = (1 - 2 sin 1, 2 cos 1, 0).
+TEST(ElementCommands, RedefinedCentreOfMassCarriesTheMotionOfTheBody) {
+  const Study r = run("cm",
+                      "cm\nUNITS/ SYSTEM=MKS\nPART/1, GROUND\nMARKER/10, PART=1\n"
+                      "PART/2, MASS=2, IP=1,1,1, CM=20, VX=1, WZ=2\nMARKER/20, PART=2\n"
+                      "MARKER/22, PART=2, QP=1,0,0\nEND\n",
+                      {"INTEGRATOR/GSTIFF, ERROR=1e-10", "SIMULATE/DYNAMICS, END=0.5, STEPS=1",
+                       "PART/2, CM=22", "SIMULATE/INITIAL_CONDITIONS"});
+  ASSERT_TRUE(r.loaded);
+  ASSERT_EQ(r.results.size(), 4u);
+  for (bool ok : r.results) EXPECT_TRUE(ok);
+  const auto& y = r.session->state()->y;
+  const int o = r.session->system()->layout().body(0);
+  const Eigen::Vector3d at(0.5 + std::cos(1.0), std::sin(1.0), 0.0);
+  const Eigen::Vector3d v(1.0 - 2.0 * std::sin(1.0), 2.0 * std::cos(1.0), 0.0);
+  // The rotation is integrated at ERROR=1e-10 for 0.5 s: errors of order 1e-8.
+  EXPECT_LT((y.segment<3>(o) - at).norm(), 1e-6);
+  EXPECT_LT((y.segment<3>(o + 7) - v).norm(), 1e-6);
+  EXPECT_NEAR(y(o + 12), 2.0, 1e-9);  // the spin is the body's, unchanged
+  std::printf("  redefined CM: position error %.3g m, velocity error %.3g m/s\n",
+              (y.segment<3>(o) - at).norm(), (y.segment<3>(o + 7) - v).norm());
+}
+
 // Issue 15: ACCGRAV added by command (the data set has none), then changed: g1 = 9.81 down z
 // for 1 s, then g2 = 1.62: z(2) = -g1/2 - g1 - g2/2.
 TEST(ElementCommands, AccgravChangedBetweenTwoSimulates) {
