@@ -107,12 +107,21 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
   language::CommandFile cf;
   language::readCommandFile(path, cf, diags);
   printDiagnostics(diags);
-  if (diags.hasErrors()) return RunOutcome::InputError;
+  readErrors_ += diags.errorCount();
+  readWarnings_ += diags.warningCount();
+  if (diags.hasErrors() && !keepGoing_) return RunOutcome::InputError;
 
   const fs::path base = fs::path(path).parent_path();
   if (!cf.modelFile.empty()) {
     const fs::path model = resolveInputPath(cf.modelFile, base, ".adm");
     const std::string prefix = cf.outputPrefix.empty() ? model.stem().string() : cf.outputPrefix;
+    if (!fs::is_regular_file(model)) {  // one clear message, not the checks of an empty model
+      std::fprintf(stderr, "%s:1:1: error: the data set %s does not exist. Check line 1 of the "
+                   "command file; .adm is added when it has no extension\n",
+                   path.c_str(), model.string().c_str());
+      ++readErrors_;
+      return RunOutcome::InputError;
+    }
     modelLoaded_ = session_.loadModel(model.string(), prefix);
     if (!modelLoaded_) {
       std::fprintf(stderr, "openmss: the model %s has errors; nothing was simulated\n",
@@ -132,7 +141,7 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
     const bool loadsModel = c.name == "FILE" && c.has("MODEL");
     if (!execute(c, echo, base)) {
       outcome = loadsModel ? RunOutcome::InputError : RunOutcome::CommandFailed;
-      break;
+      if (!keepGoing_ || loadsModel) break;
     }
     if (session_.stopped()) break;
   }

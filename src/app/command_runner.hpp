@@ -46,6 +46,11 @@ class CommandRunner {
   RunOutcome runCommandFile(const std::string& path);
 
   bool modelLoaded() const { return modelLoaded_; }
+  // `openmss check`: a failing command does not end the file, so that every error is
+  // reported; errors of the command file's reading are counted here.
+  void setKeepGoing(bool keepGoing) { keepGoing_ = keepGoing; }
+  int readErrors() const { return readErrors_; }
+  int readWarnings() const { return readWarnings_; }
 
  private:
   bool loadModel(const language::Statement& command, const std::filesystem::path& base);
@@ -54,6 +59,8 @@ class CommandRunner {
   std::FILE* helpOut_;
   bool modelLoaded_ = false;
   int commandFileDepth_ = 0;  // FILE/COMMAND nesting, bounded against a file that runs itself
+  bool keepGoing_ = false;
+  int readErrors_ = 0, readWarnings_ = 0;
 };
 
 }  // namespace openmss::app

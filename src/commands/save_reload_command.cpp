@@ -187,6 +187,13 @@ bool Session::reloadSystem(const language::Statement& c, const analysis::SaveFil
   std::swap(model_, model);
   std::swap(system_, system);
   std::swap(state_, state);
+  // The element commands among those replayed edit this data set (model_edits.hpp); the
+  // edits are applied before the states are restored, so that the states meet the model
+  // they were saved from.
+  language::Dataset oldDataset = std::exchange(dataset_, dataset);
+  const ModelEdits oldPending = std::exchange(pendingEdits_, ModelEdits{});
+  const ModelEdits oldApplied = std::exchange(appliedEdits_, ModelEdits{});
+  const bool oldEditsPending = std::exchange(editsPending_, false);
   bool ok = true;
   std::string why;
   for (const std::string& text : file.commands) {
@@ -203,11 +210,19 @@ bool Session::reloadSystem(const language::Statement& c, const analysis::SaveFil
       break;
     }
   }
+  if (ok && editsPending_ && !applyEdits(c)) {
+    ok = false;
+    why = "the model changes of the saved commands do not build";
+  }
   if (ok && !analysis::restoreRunState(file, *system_, *state_, &why)) ok = false;
   if (!ok) {
     std::swap(model_, model);
     std::swap(system_, system);
     std::swap(state_, state);
+    dataset_ = std::move(oldDataset);
+    pendingEdits_ = oldPending;
+    appliedEdits_ = oldApplied;
+    editsPending_ = oldEditsPending;
     error(c, "RELOAD/SYSTEM refused, nothing was reloaded: " + why, "");
     return false;
   }

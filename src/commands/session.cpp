@@ -72,8 +72,8 @@ void Session::echoCommand(const std::string& text) {
 
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
   prefix_ = outputPrefix;
-  std::filesystem::create_directories(options_.outputDirectory);
-  if (!msg_.open(messageFilePath())) {
+  if (!options_.checkOnly) std::filesystem::create_directories(options_.outputDirectory);
+  if (!options_.checkOnly && !msg_.open(messageFilePath())) {
     Diagnostic d;
     d.where = {path, 0, 0};
     d.message = "cannot create the message file " + messageFilePath();
@@ -95,11 +95,14 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   // refer to the model about to be replaced.
   state_.reset();
   system_.reset();
+  pendingEdits_ = appliedEdits_ = ModelEdits{};
+  editsPending_ = false;
   model_ = std::make_unique<model::Model>();
   model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
   reportAll(readDiags);
   msg_.line("");
   msg_.line(" Model title: " + dataset.title);
+  dataset_ = std::move(dataset);  // the model of later element commands is built from it
   // Only this data set's errors count: at the prompt, earlier commands may have failed.
   if (readDiags.hasErrors()) {
     msg_.line(" The data set has " + std::to_string(readDiags.errorCount()) +
@@ -154,16 +157,25 @@ bool Session::dispatch(const language::Statement& c) {
   if (c.name == "LINEAR") return linear(c);
   if (c.name == "DEBUG") return setDebug(c);
   if (c.name == "SAVE" || c.name == "RELOAD") return saveOrReload(c);
+  if (isElementCommand(c.name)) return elementCommand(c);
+  if (isInformationCommand(c.name)) return informationCommand(c);
   error(c, c.name + " is not supported yet by the solver",
         "README.md lists the supported commands; remove this one or run it elsewhere.");
   return false;
 }
 
 bool Session::simulate(const language::Statement& c) {
+  if (!applyEdits(c)) return false;
   Diagnostics local;
   const auto request = readSimulate(c, state_->t, local);
   reportAll(local);
   if (!request) return false;
+  if (options_.checkOnly) {  // the time the analysis would reach, for the next END= checks
+    if (const auto* t = std::get_if<analysis::TransientRun>(&*request)) state_->t = t->end;
+    if (const auto* st = std::get_if<analysis::StaticsRun>(&*request); st && st->end)
+      state_->t = *st->end;
+    return true;
+  }
   const analysis::AnalysisContext run = context();
   if (const auto* ic = std::get_if<analysis::InitialConditionsRun>(&*request))
     return analysis::runInitialConditions(run, *ic);
@@ -175,10 +187,12 @@ bool Session::simulate(const language::Statement& c) {
 }
 
 bool Session::linear(const language::Statement& c) {
+  if (!applyEdits(c)) return false;
   Diagnostics local;
   const auto request = readLinear(c, *model_, options_.outputDirectory, prefix_, local);
   reportAll(local);
   if (!request) return false;
+  if (options_.checkOnly) return true;
   return analysis::runLinear(context(), *request);
 }
 

@@ -6,12 +6,14 @@
 // (docs/architecture.md).
 
 #include <memory>
+#include <set>
 #include <string>
 
 #include "analysis/analysis_context.hpp"
 #include "analysis/run_report.hpp"
 #include "analysis/run_state.hpp"
 #include "analysis/save_file.hpp"
+#include "commands/model_edits.hpp"
 #include "common/diagnostics.hpp"
 #include "language/dataset.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -23,8 +25,13 @@ namespace openmss::commands {
 
 struct SessionOptions {
   std::string outputDirectory = ".";
-  bool progress = false;        // a progress line on the terminal (stderr)
-  bool echoDiagnostics = true;  // print diagnostics on stderr
+  bool progress = false;         // a progress line on the terminal (stderr)
+  bool echoDiagnostics = true;   // print diagnostics on stderr
+  bool printInformation = true;  // INFO, SHOW, TIME, MENU also print on stdout
+  // `openmss check FILE.acf`: every command is read and checked against the model (ids,
+  // arguments, the model each change leaves) but no analysis runs and no file is written;
+  // SIMULATE only advances the time to its END.
+  bool checkOnly = false;
 };
 
 class Session final : private analysis::RunReport {
@@ -73,6 +80,23 @@ class Session final : private analysis::RunReport {
   bool setOutput(const language::Statement& command);
   bool setAnalysisParameters(const language::Statement& command);
   bool setDebug(const language::Statement& command);
+  // Element commands (element_commands.cpp): ACTIVATE, DEACTIVATE and the commands that
+  // redefine a statement. They change pendingEdits_; applyEdits builds the model of the next
+  // analysis from the Dataset and the edits and carries the state over.
+  static bool isElementCommand(const std::string& name);
+  bool elementCommand(const language::Statement& command);
+  bool switchElements(const language::Statement& command);
+  bool redefine(const language::Statement& command);
+  bool acceptEdits(const language::Statement& command, const ModelEdits& next);
+  bool applyEdits(const language::Statement& command);
+  // Information and environment commands (info_commands.cpp): INFO, SHOW, TIME, MENU,
+  // PREFERENCES, LSOLVER, ENVIRONMENT, CONTROL, ACCGRAV/LIST.
+  static bool isInformationCommand(const std::string& name);
+  bool informationCommand(const language::Statement& command);
+  bool info(const language::Statement& command);
+  bool show(const language::Statement& command);
+  bool preferences(const language::Statement& command);
+  void inform(const std::string& text, bool messageFile = true);
   // Reports (and keeps) diagnostics gathered while reading a command.
   void reportAll(const Diagnostics& local);
   void error(const language::Statement& s, const std::string& message, const std::string& hint);
@@ -92,6 +116,10 @@ class Session final : private analysis::RunReport {
   output::MessageLog msg_;
   output::RequestFileWriter req_;
   std::string prefix_;
+  language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
+  ModelEdits pendingEdits_;    // as the commands so far leave the model
+  ModelEdits appliedEdits_;    // as the model_ of the last analysis was built
+  bool editsPending_ = false;  // pendingEdits_ differ from appliedEdits_
   std::unique_ptr<model::Model> model_;
   std::unique_ptr<mechanics::MultibodySystem> system_;
   std::unique_ptr<analysis::RunState> state_;
@@ -100,6 +128,7 @@ class Session final : private analysis::RunReport {
   // model-changing commands since, as echoed (pendingEcho_: the echo of the command at hand).
   std::string datasetText_;
   std::vector<std::string> commandHistory_, pendingEcho_;
+  std::set<std::string> warnedOptions_;  // PREFERENCES/LSOLVER/ENVIRONMENT warnings given
   double progressStart_ = 0.0, progressLast_ = 0.0;  // steady-clock seconds
 };
 

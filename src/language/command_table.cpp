@@ -21,6 +21,7 @@ const std::vector<std::string> kStatementCommands = {
     "PART",         "MARKER",      "FLEX_BODY",   "JOINT",      "MOTION",     "GCON",    "UCON",
     "ACCGRAV",      "BEAM",        "BUSHING",     "FIELD",      "FRICTION",   "GFORCE",  "SFORCE",
     "SPRINGDAMPER", "VFORCE",      "VTORQUE",     "ARRAY",      "SPLINE",     "STRING",  "VARIABLE",
+    "DIFF",
     "DEBUG",        "EQUILIBRIUM", "IC",          "INTEGRATOR", "KINEMATICS", "LSOLVER", "SENSOR",
     "OUTPUT",       "REQUEST",     "ENVIRONMENT", "PREFERENCES"};
 
@@ -28,7 +29,7 @@ const std::vector<std::string> kStatementCommands = {
 const std::vector<std::string> kSwitchableElements = {
     "BEAM",   "BUSHING",      "CONTACT", "CLEARANCE", "COUPLER",  "CVCV",   "DIFF",
     "FIELD",  "FRICTION",     "GCON",    "GEAR",      "GFORCE",   "GSE",    "JOINT",
-    "JPRIM",  "LSE",          "MFORCE",  "MOTION",    "NFORCE",   "PTCV",   "SENSOR",
+    "JPRIM",  "LSE",          "MFORCE",  "MOTION",    "NFORCE",   "PTCV",   "REQUEST", "SENSOR",
     "SFORCE", "SPRINGDAMPER", "TFSISO",  "UCON",      "VARIABLE", "VFORCE", "VTORQUE"};
 
 StatementSpec elementSwitch(std::string name) {

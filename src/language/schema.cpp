@@ -44,7 +44,13 @@ std::vector<StatementSpec> finalCommandTable() {
   // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
   markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "WSTIFF", "DSTIFF", "SIMULATE", "STOP",
                     "FILE", "HELP", "EQUILIBRIUM", "IC", "KINEMATICS", "LINEAR",
-                    "DEBUG", "SAVE", "RELOAD"});
+                    "DEBUG", "SAVE", "RELOAD",
+                    // commands/element_commands.cpp and info_commands.cpp
+                    "ACTIVATE", "DEACTIVATE", "PART", "MARKER", "JOINT", "MOTION", "GCON",
+                    "ACCGRAV", "BEAM", "BUSHING", "FIELD", "GFORCE", "SFORCE", "SPRINGDAMPER",
+                    "VFORCE", "VTORQUE", "ARRAY", "SPLINE", "STRING", "VARIABLE", "DIFF",
+                    "SENSOR", "REQUEST", "INFO", "SHOW", "TIME", "MENU", "PREFERENCES",
+                    "LSOLVER", "ENVIRONMENT"});
   return t;
 }
 

@@ -13,6 +13,7 @@
 #include "model/request_builder.hpp"
 #include "model/sensor_builder.hpp"
 #include "model/sforce_builder.hpp"
+#include "model/solver_preferences.hpp"
 #include "model/statement_arguments.hpp"
 #include "model/units_table.hpp"
 #include "model/user_equation_builder.hpp"
@@ -45,7 +46,9 @@ const std::set<std::string>& supportedStatements() {
                                           // results-file request: warns (no .res writer yet)
                                           "RESULTS",
                                           // integrator choice (analysis_settings.cpp)
-                                          "INTEGRATOR"};
+                                          "INTEGRATOR",
+                                          // solver internals: warn (solver_preferences.cpp)
+                                          "PREFERENCES", "LSOLVER", "ENVIRONMENT"};
   return s;
 }
 
@@ -129,6 +132,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
                                       a.real("KGRAV").value_or(0.0));
     } else if (s.name == "DEBUG") {
       applyDebugArguments(s, model.debug, diags);
+    } else if (s.name == "PREFERENCES" || s.name == "LSOLVER" || s.name == "ENVIRONMENT") {
+      applySolverPreferences(s, diags);
     } else if (s.name == "OUTPUT") {
       applyOutputArguments(s, model.output, diags);
     } else if (s.name == "RESULTS") {  // like OUTPUT/GRSAVE: a file request, not the model's
