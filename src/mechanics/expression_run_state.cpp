@@ -14,7 +14,8 @@ bool sameAngle(const model::Measure& a, const model::Measure& b) {
 }
 }  // namespace
 
-ExpressionRunState::ExpressionRunState(const model::Model& m) {
+ExpressionRunState::ExpressionRunState(const model::Model& m)
+    : frictionAnchors_(m.frictions.size()) {
   for (const auto& f : m.sforces) addFunction(f.function);
   for (const auto& f : m.vectorForces)
     for (const auto& c : f.components)
@@ -45,6 +46,7 @@ void ExpressionRunState::addFunction(const model::BoundExpression& f) {
 void ExpressionRunState::reset() {
   for (Angle& a : angles_) a.set = false;
   for (Delay& d : delays_) d.history.clear();
+  for (friction::FrictionAnchor& a : frictionAnchors_) a = {};
 }
 
 void ExpressionRunState::accept(const MultibodySystem& system, double t, const Eigen::VectorXd& y,
@@ -73,6 +75,8 @@ void ExpressionRunState::accept(const MultibodySystem& system, double t, const E
     angles_[k].set = true;
   }
   for (std::size_t k = 0; k < delays_.size(); ++k) delays_[k].history.record(t, delayed[k]);
+  for (std::size_t k = 0; k < frictionAnchors_.size(); ++k)
+    friction::updateAnchor(m, l, static_cast<int>(k), y.data(), frictionAnchors_[k]);
 }
 
 const double* ExpressionRunState::angleReference(const model::Measure& ms) const {

@@ -14,6 +14,7 @@
 #include "common/dual.hpp"
 #include "expr/delay_history.hpp"
 #include "expr/run_context.hpp"
+#include "mechanics/friction/friction_anchor.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
@@ -39,6 +40,12 @@ class ExpressionRunState final : public expr::RunContext {
   const double* angleReference(const model::Measure& ms) const;
   const expr::DelayHistory* delayHistory(const void* key) const override;
 
+  // The stiction anchor of FRICTION k (mechanics/friction/friction_anchor.hpp), or nullptr
+  // when the run state was not built for this model's frictions.
+  const friction::FrictionAnchor* frictionAnchor(int k) const {
+    return k < static_cast<int>(frictionAnchors_.size()) ? &frictionAnchors_[k] : nullptr;
+  }
+
   std::size_t angleCount() const { return angles_.size(); }
   std::size_t delayCount() const { return delays_.size(); }
 
@@ -58,6 +65,7 @@ class ExpressionRunState final : public expr::RunContext {
 
   std::vector<Angle> angles_;
   std::vector<Delay> delays_;
+  std::vector<friction::FrictionAnchor> frictionAnchors_;  // one per FRICTION
 };
 
 // The cumulative angle from its principal value: the principal value plus the whole turns
