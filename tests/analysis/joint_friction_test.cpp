@@ -14,7 +14,10 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -66,7 +69,7 @@ std::string incline(double phi, const std::string& friction, double v0) {
          friction +
          "ACCGRAV/ JGRAV=-9.81\n"
          "REQUEST/1, DISPLACEMENT, I=20, J=10, RM=10\nREQUEST/2, VELOCITY, I=20, J=10, RM=10\n"
-         "REQUEST/3, F2=FRICTION(1,3)\\F3=FRICTION(1,9)\\F4=FRICTION(1,13)\\\n"
+         "REQUEST/3, F2=FRICTION(1,3)\\F3=FRICTION(1,9)\\F4=FRICTION(1,13)\n"
          "OUTPUT/REQSAVE\nEND\n";
 }
 
@@ -102,7 +105,7 @@ TEST(JointFriction, BlockBelowTheStictionAngleSticksWithinTheCreepLimit) {
 }
 
 TEST(JointFriction, BlockAboveTheStictionAngleSlidesWithDynamicFriction) {
-  const double mus = 0.4, mud = 0.25, phi = 30.0 * M_PI / 180.0;  // tan = 0.577 > mu_s
+  const double mus = 0.4, mud = 0.25, phi = 30.0 * std::numbers::pi / 180.0;  // tan = 0.577 > mu_s
   const auto req =
       runModel("slide",
                incline(phi,
@@ -139,7 +142,7 @@ TEST(JointFriction, BlockAboveTheStictionAngleSlidesWithDynamicFriction) {
 }
 
 TEST(JointFriction, BlockLaunchedDownAGentleSlopeStopsAtTheClosedFormTime) {
-  const double mud = 0.3, phi = 10.0 * M_PI / 180.0, v0 = 2.0, vs = 1e-3;
+  const double mud = 0.3, phi = 10.0 * std::numbers::pi / 180.0, v0 = 2.0, vs = 1e-3;
   const auto req =
       runModel("stop",
                incline(phi,
@@ -187,12 +190,12 @@ TEST(JointFriction, PendulumWithPinFrictionDecaysLinearly) {
                             "integrator/gstiff, error=1e-9, hmax=2e-3\n"
                             "simulate/dynamics, end=10, dtout=0.002\n");
   ASSERT_TRUE(req);
-  // The angle from the downward vertical: psi of I relative to J (degrees) plus 90 degrees
-  // (marker 21's x axis starts along the arm, 0.1 rad from -y: psi0 = a0 - 90 deg).
+  // The angle from the downward vertical: a0 plus psi of I relative to J (degrees; the markers
+  // start aligned, so psi is the rotation since the release).
   std::vector<double> t, a;
   for (const auto& step : req->steps) {
     t.push_back(step.time);
-    a.push_back((step.rows[0][3] + 90.0) * M_PI / 180.0);
+    a.push_back(a0 + step.rows[0][3] * std::numbers::pi / 180.0);
   }
   // Positive peaks, refined by the parabola through the three samples around each.
   std::vector<double> peaks;
@@ -223,10 +226,10 @@ TEST(JointFriction, PreloadAloneBrakesASpinningDiscAtConstantTorque) {
       "PART/2, MASS=3, CM=20, IP=1,1,2, WZ=10\nMARKER/20, PART=2\n"
       "JOINT/1, REVOLUTE, I=20, J=10\n"
       "FRICTION/1, JOINT=1, MU_STATIC=0.3, MU_DYNAMIC=0.2, PIN_RADIUS=0.05, "
-      "FRICTION_FORCE_PRELOAD=100, INPUTS=(PRELOAD), STICTION_TRANSITION_VELOCITY=1e-3, "
+      "FRICTION_FORCE_PRELOAD=100, INPUTS=PRELOAD, STICTION_TRANSITION_VELOCITY=1e-3, "
       "MAX_STICTION_DEFORMATION=1e-5\n"
       "REQUEST/1, VELOCITY, I=20, J=10\n"
-      "REQUEST/2, F2=FRICTION(1,6)\\F3=FRICTION(1,12)\\F4=FRICTION(1,19)\\\n"
+      "REQUEST/2, F2=FRICTION(1,6)\\F3=FRICTION(1,12)\\F4=FRICTION(1,19)\n"
       "OUTPUT/REQSAVE\nEND\n";
   const auto req = runModel("disc", adm,
                             "integrator/gstiff, error=1e-8\n"
@@ -235,7 +238,7 @@ TEST(JointFriction, PreloadAloneBrakesASpinningDiscAtConstantTorque) {
   ASSERT_EQ(req->steps.size(), 51u);
   int checked = 0;
   for (const auto& step : req->steps) {
-    const double w = step.rows[0][5];  // WZ (rad/s as printed? velocity requests print rad/s)
+    const double w = step.rows[0][5];  // WZ, rad/s
     if (step.time <= 19.5) {
       EXPECT_NEAR(w, 10.0 - 0.5 * step.time, 1e-5 * 10.0) << step.time;
       if (step.time > 0.0) {

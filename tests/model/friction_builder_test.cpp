@@ -40,7 +40,7 @@ TEST(FrictionBuilder, DefaultsAndSwitchesAreRead) {
   const Built b = build(
       "FRICTION/5, JOINT=1, MU_STATIC=0.3, MU_DYNAMIC=0.2\n"
       "FRICTION/6, JOINT=3, MU_STATIC=0.4, MU_DYNAMIC=0.1, FRICTION_FORCE_PRELOAD=7, "
-      "INPUTS=(PRELOAD:BENDING_MOMENT), EFFECT=SLIDING, INACTIVE=STATIC, INITIAL_OVERLAP=2\n"
+      "INPUTS=PRELOAD:BENDING_MOMENT, EFFECT=SLIDING, INACTIVE=STATIC, INITIAL_OVERLAP=2\n"
       "FRICTION/7, JOINT=4, MU_STATIC=0.4, MU_DYNAMIC=0.1, INPUTS=NONE, BALL_RADIUS=0.3\n");
   ASSERT_TRUE(b.errors.empty()) << b.errors[0];
   ASSERT_EQ(b.model.frictions.size(), 3u);
@@ -92,14 +92,14 @@ TEST(FrictionBuilder, MissingAndOutOfRangeValuesAreNamed) {
       "FRICTION/2, JOINT=1, MU_STATIC=0.3, MU_DYNAMIC=-0.2, STICTION_TRANSITION_VELOCITY=0\n"
       "FRICTION/3, JOINT=1, MU_STATIC=0.3, MU_DYNAMIC=0.2, BALL_RADIUS=0.1\n"
       "FRICTION/4, JOINT=4, MU_STATIC=0.3, MU_DYNAMIC=0.2, PIN_RADIUS=0.1\n"
-      "FRICTION/5, JOINT=3, MU_STATIC=0.3, MU_DYNAMIC=0.2, INPUTS=(ALL:PRELOAD)\n");
+      "FRICTION/5, JOINT=3, MU_STATIC=0.3, MU_DYNAMIC=0.2, INPUTS=ALL:PRELOAD\n");
   ASSERT_EQ(b.errors.size(), 6u) << b.errors[0];
   auto has = [&](const std::string& s) {
     for (const auto& e : b.errors)
       if (e.find(s) != std::string::npos) return true;
     return false;
   };
-  EXPECT_TRUE(has("f.adm:10:1: error: FRICTION/1: MU_STATIC is missing"));
+  EXPECT_TRUE(has("f.adm:10:1: error: FRICTION/1: missing required argument MU_STATIC"));
   EXPECT_TRUE(has("f.adm:11:37: error: FRICTION/2: MU_DYNAMIC must not be negative"));
   EXPECT_TRUE(has("FRICTION/2: STICTION_TRANSITION_VELOCITY must be greater than zero"));
   EXPECT_TRUE(has("FRICTION/3: BALL_RADIUS has no effect on a REVOLUTE joint"));
