@@ -163,7 +163,9 @@ TEST(JointFriction, BlockLaunchedDownAGentleSlopeStopsAtTheClosedFormTime) {
       ++checked;
     }
     if (firstSlow < 0.0 && std::abs(v) < vs) firstSlow = step.time;
-    if (step.time > stop + 0.05) EXPECT_LT(std::abs(v), vs) << step.time;
+    if (step.time > stop + 0.05) {
+      EXPECT_LT(std::abs(v), vs) << step.time;
+    }
   }
   EXPECT_GT(checked, 150);
   // The joint first reads below Vs at the output after (v0 - Vs) / decel; the band

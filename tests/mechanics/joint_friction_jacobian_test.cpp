@@ -111,7 +111,9 @@ double checkCase(const std::string& joint, const std::string& extra, const Case&
     for (int k = p.columnStart[col]; k < p.columnStart[col + 1]; ++k) in(p.rowIndex[k], col) = 1;
   for (int row = 0; row < p.size; ++row)
     for (int col = 0; col < p.size; ++col)
-      if (jac(row, col) != 0.0) EXPECT_EQ(in(row, col), 1) << joint << " " << row << "," << col;
+      if (jac(row, col) != 0.0) {
+        EXPECT_EQ(in(row, col), 1) << joint << " " << row << "," << col;
+      }
   *compared += static_cast<int>(jac.size());
   return worst;
 }
