@@ -117,7 +117,18 @@ TEST(FrictionBuilder, ReadBackIndicesAreChecked) {
       << b.errors[0];
   EXPECT_NE(b.errors[1].find("FRICTION: FRICTION/2 does not exist"), std::string::npos)
       << b.errors[1];
-  ASSERT_EQ(b.model.requests.size(), 1u);
+  // A valid read-back binds to the friction's index and component.
+  const Built ok = build(
+      "FRICTION/1, JOINT=1, MU_STATIC=0.3, MU_DYNAMIC=0.2\n"
+      "REQUEST/1, F2=FRICTION(1,6)\n");
+  ASSERT_TRUE(ok.errors.empty()) << ok.errors[0];
+  ASSERT_EQ(ok.model.requests.size(), 1u);
+  ASSERT_TRUE(ok.model.requests[0].columns[1]);
+  const auto& measures = ok.model.requests[0].columns[1]->measures;
+  ASSERT_EQ(measures.size(), 1u);
+  EXPECT_EQ(measures[0].kind, MeasureKind::FrictionOutput);
+  EXPECT_EQ(measures[0].element, 0);
+  EXPECT_EQ(measures[0].component, 6);
 }
 
 TEST(FrictionBuilder, InlineJointFrictionIsRefusedUnlessOff) {
