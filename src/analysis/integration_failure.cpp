@@ -27,6 +27,8 @@ std::string forceElementName(const model::Model& m, const mechanics::ForceElemen
                                                                       : "VFORCE";
       return std::string(name) + "/" + std::to_string(f.id);
     }
+    case K::Friction:
+      return "FRICTION/" + std::to_string(m.frictions[e.index].id);
   }
   return "?";
 }

@@ -203,8 +203,10 @@ bool linearize(const mechanics::MultibodySystem& system, double t, const Eigen::
   // projection removes (docs/theory.md §4b).
   if (mechanics::forceFunctionsReadReactions(system.model()))
     return refuse(
-        "a force function reads a constraint reaction force; linearising it is not supported "
-        "yet");
+        system.model().frictions.empty()
+            ? "a force function reads a constraint reaction force; linearising it is not "
+              "supported yet"
+            : "FRICTION reads its joint's reaction force; linearising it is not supported yet");
   // User equations that read reaction forces would need the multipliers' perturbation, which
   // the projection removes from the balance rows only.
   if (nd + na > 0) {

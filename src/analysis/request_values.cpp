@@ -4,6 +4,7 @@
 #include <optional>
 
 #include "common/rotation.hpp"
+#include "mechanics/friction/friction_output.hpp"
 #include "mechanics/measures.hpp"
 
 namespace openmss::analysis {
@@ -211,6 +212,10 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
       tt += tq;
       return component(ft, tt, ms.component, k);
     }
+    case K::FrictionOutput:
+      return mechanics::friction::frictionOutput(s.model(), s.layout(), &s.constraints(),
+                                                 s.runState(), ms.element, ms.component,
+                                                 y.data());
     case K::Time:
       return t;
     default:

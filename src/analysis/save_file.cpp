@@ -188,6 +188,7 @@ void readBody(Reader& r, SaveFile& f) {
   e.gseLastSample = r.vector("gse-last-sample");
   e.gseDiscrete.resize(r.count(r.fields("gse-discrete", 1)[0]));
   for (auto& xd : e.gseDiscrete) xd = r.vector("xd");
+  e.frictionAnchors = r.vector("friction-anchors");
   if (f.system) {
     f.datasetPath = r.text("dataset-path");
     f.datasetText = r.text("dataset");
@@ -316,6 +317,7 @@ std::string encodeSaveFile(const SaveFile& f) {
   w.vector("gse-last-sample", e.gseLastSample);
   w.line("gse-discrete " + std::to_string(e.gseDiscrete.size()));
   for (const auto& xd : e.gseDiscrete) w.vector("xd", xd);
+  w.vector("friction-anchors", e.frictionAnchors);
   if (f.system) {
     w.text("dataset-path", f.datasetPath);
     w.text("dataset", f.datasetText);

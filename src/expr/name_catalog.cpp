@@ -113,13 +113,15 @@ std::vector<NameInfo> buildCatalog() {
     c.push_back(host(n, 1, 3, "(i[, j][, k])"));
   }
   for (std::string_view n : {"JOINT", "JPRIM", "MOTION", "SFORCE", "SPDP", "BUSH", "FIELD", "BEAM",
-                             "VFORCE", "VTORQ", "GFORCE", "PTCV", "CVCV", "FRICTION",
+                             "VFORCE", "VTORQ", "GFORCE", "PTCV", "CVCV",
                              // CONTACT(id, jflag, comp, rm): the force of a CONTACT element, as
                              // real ADAMS/View data sets use it in SENSOR and DIFF functions.
                              "CONTACT"}) {
     c.push_back(host(n, 4, 4, "(id, jflag, comp, rm)"));
   }
   c.push_back(host("NFORCE", 4, 4, "NFORCE(id, marker, comp, rm)"));
+  // FRICTION(id, index): the outputs of joint friction (docs/theory.md, "Joint friction").
+  c.push_back(host("FRICTION", 2, 2, "FRICTION(id, index)"));
 
   // System-element access (docs/expressions.md, "Host calls").
   c.push_back(host("VARVAL", 1, 1, "VARVAL(id)"));

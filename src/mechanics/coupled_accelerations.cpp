@@ -33,6 +33,7 @@ void kinematicRates(const StateLayout& l, const Eigen::VectorXd& y, Eigen::Vecto
 }
 
 bool readsAccelerationsOrReactions(const model::Model& m) {
+  if (!m.frictions.empty()) return true;  // joint friction reads its joint's reaction
   for (const model::SForce& f : m.sforces)
     if (functionReads(f.function)) return true;
   for (const model::VectorForce& f : m.vectorForces)
@@ -46,6 +47,7 @@ bool readsAccelerationsOrReactions(const model::Model& m) {
 }
 
 bool forceFunctionsReadReactions(const model::Model& m) {
+  if (!m.frictions.empty()) return true;  // joint friction reads its joint's reaction
   auto reads = [](const model::BoundExpression& f) {
     return std::any_of(f.measures.begin(), f.measures.end(), [](const model::Measure& ms) {
       return ms.kind == model::MeasureKind::JointForce ||

@@ -17,7 +17,8 @@ bool sameAngle(const model::Measure& a, const model::Measure& b) {
 }
 }  // namespace
 
-ExpressionRunState::ExpressionRunState(const model::Model& m) {
+ExpressionRunState::ExpressionRunState(const model::Model& m)
+    : frictionAnchors_(m.frictions.size()) {
   for (const auto& f : m.sforces) addFunction(f.function);
   for (const auto& f : m.vectorForces)
     for (const auto& c : f.components)
@@ -80,6 +81,7 @@ void ExpressionRunState::reset() {
   for (Angle& a : angles_) a.set = false;
   for (Delay& d : delays_) d.history.clear();
   std::copy(coupledStart_.begin(), coupledStart_.end(), coupled_.begin());
+  for (friction::FrictionAnchor& a : frictionAnchors_) a = {};
 }
 
 void ExpressionRunState::accept(const MultibodySystem& system, double t, const Eigen::VectorXd& y,
@@ -109,6 +111,8 @@ void ExpressionRunState::accept(const MultibodySystem& system, double t, const E
   }
   for (std::size_t k = 0; k < delays_.size(); ++k) delays_[k].history.record(t, delayed[k]);
   commitCoupledAngles(system, y);
+  for (std::size_t k = 0; k < frictionAnchors_.size(); ++k)
+    friction::updateAnchor(m, l, static_cast<int>(k), y.data(), frictionAnchors_[k]);
 }
 
 ExpressionRunState::Snapshot ExpressionRunState::snapshot() const {
@@ -126,6 +130,11 @@ ExpressionRunState::Snapshot ExpressionRunState::snapshot() const {
   s.gseLastSample = gseLastSample_;
   s.gseDiscrete = gseDiscrete_;
   s.status = status_;
+  for (const friction::FrictionAnchor& a : frictionAnchors_) {
+    s.frictionAnchors.push_back(a.set ? 1.0 : 0.0);
+    for (int k = 0; k < 3; ++k) s.frictionAnchors.push_back(a.displacement[k]);
+    for (int k = 0; k < 9; ++k) s.frictionAnchors.push_back(a.rotation.data()[k]);
+  }
   return s;
 }
 
@@ -133,7 +142,8 @@ bool ExpressionRunState::restore(const Snapshot& s) {
   if (s.angleReferences.size() != angles_.size() || s.delays.size() != delays_.size() ||
       s.coupled.size() != coupled_.size() || s.sensorValues.size() != sensorValues_.size() ||
       s.gseLastSample.size() != gseLastSample_.size() ||
-      s.gseDiscrete.size() != gseDiscrete_.size())
+      s.gseDiscrete.size() != gseDiscrete_.size() ||
+      s.frictionAnchors.size() != 13 * frictionAnchors_.size())
     return false;
   for (std::size_t k = 0; k < gseDiscrete_.size(); ++k)
     if (s.gseDiscrete[k].size() != gseDiscrete_[k].size()) return false;
@@ -150,6 +160,12 @@ bool ExpressionRunState::restore(const Snapshot& s) {
   gseLastSample_ = s.gseLastSample;
   gseDiscrete_ = s.gseDiscrete;
   status_ = s.status;
+  for (std::size_t k = 0; k < frictionAnchors_.size(); ++k) {
+    const double* a = s.frictionAnchors.data() + 13 * k;
+    frictionAnchors_[k].set = a[0] != 0.0;
+    for (int i = 0; i < 3; ++i) frictionAnchors_[k].displacement[i] = a[1 + i];
+    for (int i = 0; i < 9; ++i) frictionAnchors_[k].rotation.data()[i] = a[4 + i];
+  }
   return true;
 }
 

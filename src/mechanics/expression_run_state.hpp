@@ -19,6 +19,7 @@
 #include "expr/delay_history.hpp"
 #include "expr/run_context.hpp"
 #include "model/analysis_status.hpp"
+#include "mechanics/friction/friction_anchor.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
@@ -44,6 +45,12 @@ class ExpressionRunState final : public expr::RunContext {
   // The last accepted value of the cumulative angle `ms`, or nullptr before the first accept.
   const double* angleReference(const model::Measure& ms) const;
   const expr::DelayHistory* delayHistory(const void* key) const override;
+
+  // The stiction anchor of FRICTION k (mechanics/friction/friction_anchor.hpp), or nullptr
+  // when the run state was not built for this model's frictions.
+  const friction::FrictionAnchor* frictionAnchor(int k) const {
+    return k < static_cast<int>(frictionAnchors_.size()) ? &frictionAnchors_[k] : nullptr;
+  }
 
   std::size_t angleCount() const { return angles_.size(); }
   std::size_t delayCount() const { return delays_.size(); }
@@ -80,6 +87,8 @@ class ExpressionRunState final : public expr::RunContext {
     std::vector<double> coupled, sensorValues, gseLastSample;
     std::vector<std::vector<double>> gseDiscrete;
     model::AnalysisStatus status;
+    // Per FRICTION, 13 numbers: set (0/1), displacement (3), rotation (9, column-major).
+    std::vector<double> frictionAnchors;
   };
   Snapshot snapshot() const;
   bool restore(const Snapshot& s);
@@ -110,6 +119,7 @@ class ExpressionRunState final : public expr::RunContext {
   std::vector<double> sensorValues_, gseLastSample_;
   std::vector<std::vector<double>> gseDiscrete_;
   model::AnalysisStatus status_;
+  std::vector<friction::FrictionAnchor> frictionAnchors_;  // one per FRICTION
 };
 
 // The cumulative angle from its principal value: the principal value plus the whole turns

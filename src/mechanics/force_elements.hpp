@@ -13,13 +13,17 @@
 #include <Eigen/Dense>
 
 #include "mechanics/bound_function.hpp"
+#include "mechanics/expression_run_state.hpp"
+#include "mechanics/friction/joint_friction.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
 
-enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce };
+// Friction: FRICTION on a joint (mechanics/friction/joint_friction.hpp), acting between the
+// joint's I and J markers.
+enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Friction };
 
 // One element: its kind and its index in the Model's vector of that kind.
 struct ForceElementRef {
@@ -95,6 +99,8 @@ class ForceElements {
   template <class T>
   ElementLoads<T> vectorForceLoads(int k, double t, const T* y,
                                    const DynamicReads<T>* reads) const;
+  template <class T>
+  ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
                    bool hasForce, bool hasTorque, const T* y, T* g) const;
@@ -265,8 +271,28 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
     case ForceElementKind::SpringDamper: return springDamperLoads(e.index, y);
     case ForceElementKind::LinearField: return linearFieldLoads(e.index, y);
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
+    case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
   }
   return {};
+}
+
+template <class T>
+ElementLoads<T> ForceElements::frictionLoads(int k, const T* y,
+                                             const DynamicReads<T>* reads) const {
+  const friction::FrictionAnchor* anchor = run_ != nullptr ? run_->frictionAnchor(k) : nullptr;
+  const friction::FrictionResult<T> r = friction::frictionLoads(
+      *model_, layout_, reads != nullptr ? reads->constraints : nullptr, k, y, anchor);
+  const model::Joint& joint = model_->joints[model_->frictions[k].joint];
+  ElementLoads<T> l;
+  l.force = r.force;
+  l.torque = r.torque;
+  l.hasForce = l.hasTorque = true;
+  // Equal and opposite on J's part, at the I origin (the contact the joint makes).
+  l.reactionMarker = joint.jMarker;
+  l.reactionPoint = markerState(*model_, layout_, joint.iMarker, y).p;
+  l.reactionForce = -l.force;
+  l.reactionTorque = -l.torque;
+  return l;
 }
 
 template <class T>

@@ -234,6 +234,14 @@ class PatternBuilder {
             if (component) addFunction(d, *component);
           break;
         }
+        case ForceElementKind::Friction: {
+          // The joint's reaction: its multipliers and the poses its equations read.
+          model::Measure reaction;
+          reaction.kind = model::MeasureKind::JointForce;
+          reaction.element = m_.frictions[e.index].joint;
+          addReaction(d, reaction);
+          break;
+        }
         default:
           d.all = true;
           break;

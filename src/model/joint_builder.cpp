@@ -119,6 +119,14 @@ void buildJoint(const Statement& s, Model& model, Diagnostics& diags) {
   j.jMarker = markerReference(model, s, "J", diags);
   if (!jointData(a, nTypes == 1, j)) nTypes = -1;
   if (nTypes == 1) jointInitialConditions(a, j);
+  // Joint friction written inline by ADAMS/View (FRICTION=ON or PRELOAD_ONLY with MU_STAT_ROT,
+  // INNER_RADIUS, ...): its mapping to the FRICTION statement is not published; without
+  // FRICTION=ON those arguments have no effect (friction off), as in ADAMS/View.
+  if (const Argument* fr = s.find("FRICTION");
+      fr && !fr->values.empty() && fr->values[0].text != "OFF")
+    a.error(*fr, "inline joint friction (FRICTION=" + fr->values[0].text + ") is not supported",
+            "Write a FRICTION statement on this joint instead (docs/theory.md, \"Joint "
+            "friction\").");
   if (onSamePart(model, j.iMarker, j.jMarker))
     a.error(s.where,
             "I and J markers are on the same part (PART/" +

@@ -28,6 +28,9 @@ enum class MeasureKind {
   // Model::springDampers, linearFields (BUSH, FIELD, BEAM) or vectorForces (VFORCE...).
   SpringDamperForce, BushingForce, FieldForce, BeamForce, VForceForce, VTorqueForce,
   GForceForce,
+  // FRICTION(id, comp): `element` indexes Model::frictions, `component` 1..22 (ADAMS's
+  // FFX..FTZ, coefficients, slip velocities, creep; mechanics/friction/friction_output.hpp).
+  FrictionOutput,
   // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
   // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
   VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
@@ -76,6 +79,7 @@ struct Measure {
       case MeasureKind::FieldForce: case MeasureKind::BeamForce:
       case MeasureKind::VForceForce: case MeasureKind::VTorqueForce:
       case MeasureKind::GForceForce:
+      case MeasureKind::FrictionOutput:
       case MeasureKind::NetForce:
         return true;
       default:

@@ -204,6 +204,30 @@ struct VectorForce {
   SourceLocation where;
 };
 
+// FRICTION on a joint (docs/theory.md, "Joint friction"; mechanics/friction/): a force and/or
+// torque that opposes the slip of the joint, proportional to an equivalent normal force made of
+// the joint's reaction (multipliers), its preload and arms.
+struct Friction {
+  enum class Effect { All, Stiction, Sliding };
+  long id = 0;
+  int joint = -1;  // index into Model::joints
+  double muStatic = 0.0, muDynamic = 0.0;
+  double stictionVelocity = 0.1;        // STICTION_TRANSITION_VELOCITY (length/time)
+  double maxStictionDeformation = 0.01; // MAX_STICTION_DEFORMATION (length)
+  double preload = 0.0;                 // FRICTION_FORCE_PRELOAD (force)
+  double frictionArm = 1.0;             // FRICTION_ARM (Rn)
+  double bendingArm = 1.0;              // BENDING_REACTION_ARM (Rb)
+  double ballRadius = 1.0;              // BALL_RADIUS
+  double pinRadius = 1.0;               // PIN_RADIUS (Rp)
+  double initialOverlap = 1.0;          // INITIAL_OVERLAP (Xs0)
+  Effect effect = Effect::All;
+  // INPUTS switches: PRELOAD, REACTION_FORCE, BENDING_MOMENT, TORSIONAL_MOMENT.
+  bool usePreload = true, useReactionForce = true, useBendingMoment = true,
+       useTorsionalMoment = true;
+  bool inactiveStatic = false;  // INACTIVE=STATIC
+  SourceLocation where;
+};
+
 // ---- User equations (docs/theory.md §4a; model/user_equation_builder.cpp) ----
 
 // VARIABLE: an algebraic unknown v with v = FUNCTION(...), read with VARVAL(id).
@@ -371,6 +395,7 @@ struct Model {
   std::vector<SpringDamper> springDampers;
   std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM
   std::vector<VectorForce> vectorForces;  // VFORCE, VTORQUE, GFORCE
+  std::vector<Friction> frictions;        // FRICTION (joint friction)
   // User equations: VARIABLE, DIFF, ARRAY, LSE/TFSISO, PINPUT, POUTPUT.
   std::vector<Variable> variables;
   std::vector<Diff> diffs;

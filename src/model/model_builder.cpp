@@ -6,6 +6,7 @@
 #include "model/coupling_builder.hpp"
 #include "model/data_element_builder.hpp"
 #include "model/force_element_builder.hpp"
+#include "model/friction_builder.hpp"
 #include "model/general_constraint_builder.hpp"
 #include "model/joint_builder.hpp"
 #include "model/motion_builder.hpp"
@@ -36,6 +37,8 @@ const std::set<std::string>& supportedStatements() {
                                           "COUPLER", "GEAR",
                                           // general constraints (general_constraint_builder)
                                           "GCON",
+                                          // joint friction (friction_builder.cpp)
+                                          "FRICTION",
                                           // user equations (user_equation_builder.cpp)
                                           "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO",
                                           "PINPUT", "POUTPUT", "GSE",
@@ -60,6 +63,7 @@ struct StatementGroups {
   std::vector<const Statement*> userEquations;  // VARIABLE, DIFF, ARRAY, LSE, TFSISO, ...
   std::vector<const Statement*> couplings;      // COUPLER, GEAR
   std::vector<const Statement*> gcons;          // GCON
+  std::vector<const Statement*> frictions;      // FRICTION
 };
 
 // OUTPUT statement: REQSAVE and (NO)SEPARATOR are supported; the others warn.
@@ -116,6 +120,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       groups.couplings.push_back(&s);
     } else if (s.name == "GCON") {
       groups.gcons.push_back(&s);
+    } else if (s.name == "FRICTION") {
+      groups.frictions.push_back(&s);
     } else if (s.name == "REQUEST") {
       groups.requests.push_back(&s);
     } else if (s.name == "EQUILIBRIUM") {
@@ -347,10 +353,12 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
       // VARVAL, DIF, DIF1, ARYVAL, PINVAL, POUVAL (user_equation_builder.cpp)
     } else if (bindSensorMeasure(model, call, m, fail)) {
       // SENVAL (sensor_builder.cpp)
+    } else if (bindFrictionMeasure(model, call, m, fail)) {
+      // FRICTION(id, index) (friction_builder.cpp)
     } else if (bindAnalysisVariable(call.name, forRequest, m, fail)) {
       // MODE, HSIZE, ORDER, NJAC, NRHS; CPU refused (model/analysis_status.hpp)
     } else if (call.name == "NFORCE" || call.name == "PTCV" || call.name == "CVCV" ||
-               call.name == "FRICTION" || call.name == "CONTACT") {
+               call.name == "CONTACT") {
       // Read-backs of elements the solver rejects at input (expr4): name the missing element.
       const long eid = call.args.empty() ? 0 : call.args[0];
       fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
@@ -398,6 +406,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildJoints(groups.joints, model, diags);
   buildJointPrimitives(groups.jprims, model, diags);
   buildMotions(groups.motions, model, diags);  // after the joints they drive
+  buildFrictions(groups.frictions, model, diags);  // FRICTION (friction_builder.cpp)
   // User equations (user_equation_builder.cpp): before any function is bound, since every
   // function may read them (VARVAL, DIF, ARYVAL, ...).
   buildUserEquations(groups.userEquations, dataset, model, diags);

@@ -1,0 +1,40 @@
+#pragma once
+// FRICTION(id, index) (docs/theory.md, "Joint friction", read-back table), ADAMS's indices:
+//   1-3   friction force on the I marker's part along x, y, z of the joint's J marker
+//   4-6   friction torque on it about x, y, z of J
+//   7-12  friction coefficient along x, y, z and about x, y, z of J (signed: opposing the slip)
+//   13    the effective coefficient in stiction (|mu| in the static regime, 0 when sliding)
+//   14-16 slip velocity of I relative to J along x, y, z of J
+//   17-19 relative angular velocity about x, y, z of J
+//   20-22 creep along x, y, z of J (translational joints; rotational creep is in 7-12's units
+//         of the radius and not reported)
+
+#include <cmath>
+
+#include "mechanics/expression_run_state.hpp"
+#include "mechanics/friction/joint_friction.hpp"
+
+namespace openmss::mechanics::friction {
+
+inline double frictionOutput(const model::Model& m, const StateLayout& l,
+                             const ConstraintSet* constraints, const ExpressionRunState* run,
+                             int friction, int index, const double* y) {
+  const FrictionAnchor* anchor = run != nullptr ? run->frictionAnchor(friction) : nullptr;
+  const FrictionResult<double> r = frictionLoads(m, l, constraints, friction, y, anchor);
+  const FrictionKinematics<double>& k = r.kinematics;
+  if (index >= 1 && index <= 3) return r.forceJ[index - 1];
+  if (index >= 4 && index <= 6) return r.torqueJ[index - 4];
+  if (index >= 7 && index <= 12) return r.mu[index - 7];
+  if (index == 13) {
+    if (!r.active || r.regime != 0) return 0.0;
+    double mu2 = 0.0;
+    for (double mu : r.mu) mu2 += mu * mu;
+    return std::sqrt(mu2);
+  }
+  if (index >= 14 && index <= 16) return k.slip[index - 14];
+  if (index >= 17 && index <= 19) return k.slip[index - 14] / k.channels.radius;
+  if (index >= 20 && index <= 22) return k.creep[index - 20];
+  return 0.0;
+}
+
+}  // namespace openmss::mechanics::friction
