@@ -20,10 +20,13 @@
 #include <vector>
 
 #include "analysis/analysis_context.hpp"
+#include "analysis/eigen_analysis.hpp"
+#include "analysis/linearization.hpp"
 #include "analysis/model_summary.hpp"
 #include "analysis/run_state.hpp"
 #include "analysis/transient_run.hpp"
 #include "language/reader.hpp"
+#include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
 
 namespace openmss {
@@ -164,6 +167,37 @@ TEST(MasslessParts, BobOnAMasslessRodHasThePointMassPeriodWithEveryIntegrator) {
     ++compared;
   }
   EXPECT_EQ(compared, 7);
+}
+
+// The linear analysis about the hanging position: the massless rod adds no inertia, so the
+// swing has the point-mass frequency sqrt(g/L) (and the bob's free spin two zero eigenvalues).
+// Linearisation is exact (forward AD), so 1e-8 relative is round-off room.
+TEST(MasslessParts, TheLinearisedSwingOfABobOnAMasslessRodHasThePointMassFrequency) {
+  const double length = 2.0, g = 9.80665;
+  auto l = load(rodPendulum(length, 0.0));
+  mechanics::MultibodySystem& s = *l->system;
+  Eigen::VectorXd y = s.initialState(), yp = Eigen::VectorXd::Zero(y.size());
+  ASSERT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-13, 25).converged);
+  mechanics::solveVelocities(s, 0.0, y);
+  ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
+  analysis::LinearSystem lin;
+  std::string why;
+  ASSERT_TRUE(analysis::linearize(s, 0.0, y, yp, {}, lin, &why)) << why;
+  ASSERT_EQ(lin.degreesOfFreedom, 2);
+  const auto modes = analysis::eigenModes(lin);
+  ASSERT_EQ(modes.size(), 4u);
+  int swings = 0, zeros = 0;
+  for (const auto& mode : modes) {
+    if (std::abs(mode.value) < 1e-9) {
+      ++zeros;
+      continue;
+    }
+    EXPECT_NEAR(std::abs(mode.value.imag()), std::sqrt(g / length), 1e-8 * std::sqrt(g / length));
+    EXPECT_NEAR(mode.value.real(), 0.0, 1e-10);
+    ++swings;
+  }
+  EXPECT_EQ(swings, 2);
+  EXPECT_EQ(zeros, 2);
 }
 
 std::string conicalPendulum(double length, double alpha, double omega) {
