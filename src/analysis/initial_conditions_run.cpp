@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "analysis/multibody_dae.hpp"
+#include "mechanics/massless_motions.hpp"
 #include "mechanics/user_state_solve.hpp"
 
 namespace openmss::analysis {
@@ -105,6 +106,35 @@ bool reportAssembly(const AnalysisContext& run, const mechanics::AssemblyResult&
   return false;
 }
 
+namespace {
+
+// A massless part (or one with a zero principal moment) whose zero-inertia motion no
+// constraint holds makes the mass matrix singular on the motions the constraints allow: its
+// acceleration is undetermined. Named at the PART (docs/theory.md, "Parts as ADAMS accepts
+// them") instead of a singular acceleration problem.
+bool reportUnheldMasslessMotions(const AnalysisContext& run) {
+  const model::Model& m = run.model;
+  const auto free = mechanics::unheldMasslessMotions(run.system, run.state.y.data());
+  for (const auto& u : free) {
+    const model::Part& p = m.parts[m.movingParts[u.body]];
+    Diagnostic d;
+    d.severity = Severity::Error;
+    d.where = p.where;
+    d.subject = "PART/" + std::to_string(p.id);
+    d.message = std::string(u.rotation ? "has a zero principal moment of inertia" : "has no mass") +
+                " and no constraint holds " + mechanics::describeMotion(u) +
+                ": its acceleration is undetermined (singular mass matrix)";
+    d.hint = u.rotation ? "Give IP=Ixx,Iyy,Izz with positive moments, or hold that rotation "
+                          "with a joint (a massless part must be held by constraints)."
+                        : "Give MASS=<value> > 0, or hold that translation with a joint (a "
+                          "massless part must be held by constraints).";
+    run.report.diagnostic(d);
+  }
+  return free.empty();
+}
+
+}  // namespace
+
 bool solveInitialConditions(const AnalysisContext& run) {
   mechanics::MultibodySystem& system = run.system;
   RunState& s = run.state;
@@ -128,6 +158,7 @@ bool solveInitialConditions(const AnalysisContext& run) {
         "(VARIABLE/1, FUNCTION=VARVAL(1)+1 has none), or give IC= starting values.");
     return false;
   }
+  if (!reportUnheldMasslessMotions(run)) return false;
   if (!mechanics::solveAccelerations(system, s.t, s.y, s.yp)) {
     run.error(nullptr,
               "the accelerations and constraint forces at the initial state cannot be "

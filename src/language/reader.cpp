@@ -100,9 +100,19 @@ void readDatasetText(std::string_view text, const std::string& fileName, Dataset
       continue;
     }
     if (first.text[0] == ',') {
-      diags.error({fileName, first.number, 1}, previousSubject,
-                  "continuation line has no statement to continue",
-                  "Line 1 is the title; start the first statement on line 2 or later");
+      if (statements.empty()) {
+        // Continuation lines straight after the title continue the title record: line 1 is
+        // never a statement, so they continue nothing that could be read. Skipped with a
+        // warning rather than refused (docs/language.md, "Title line").
+        diags.warning({fileName, first.number, 1}, "",
+                      "continuation line after the title continues the title (line 1 is "
+                      "never a statement); it is skipped",
+                      "If line 1 was meant as a statement, insert a title line before it");
+      } else {
+        diags.error({fileName, first.number, 1}, previousSubject,
+                    "continuation line has no statement to continue",
+                    "Start the statement on a line without a leading ','");
+      }
       ++i;
       continue;
     }

@@ -9,6 +9,7 @@
 #include "model/friction_builder.hpp"
 #include "model/general_constraint_builder.hpp"
 #include "model/joint_builder.hpp"
+#include "model/material_builder.hpp"
 #include "model/motion_builder.hpp"
 #include "model/part_builder.hpp"
 #include "model/request_builder.hpp"
@@ -51,7 +52,9 @@ const std::set<std::string>& supportedStatements() {
                                           // integrator choice (analysis_settings.cpp)
                                           "INTEGRATOR",
                                           // solver internals: warn (solver_preferences.cpp)
-                                          "PREFERENCES", "LSOLVER", "ENVIRONMENT"};
+                                          "PREFERENCES", "LSOLVER", "ENVIRONMENT",
+                                          // data only (material_builder.cpp)
+                                          "MATERIAL"};
   return s;
 }
 
@@ -403,6 +406,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   StatementGroups groups;
   readStatements(dataset, model, parts, groups, diags);
   parts.build(dataset, model, diags);  // parts and markers: every other element names them
+  readMaterials(dataset, diags);  // MATERIAL (data only, checked) and PART's MATERIAL=
   buildJoints(groups.joints, model, diags);
   buildJointPrimitives(groups.jprims, model, diags);
   buildMotions(groups.motions, model, diags);  // after the joints they drive

@@ -195,28 +195,26 @@ void PartBuilder::bodyFrames(const std::map<long, size_t>& rawPartIndex, const G
       p.orientation = Eigen::Matrix3d::Identity();
       continue;
     }
-    if (!rp.cm) {
-      diags.error(p.where, subject, "a moving part needs a CM marker",
-                  "Add CM=<marker id> naming a marker on this part at its centre of mass.");
-      continue;
-    }
-    if (!onPart(*rp.cm, p.id)) {
+    // Without CM the part's BCS (QG and REULER or ZG/XG) is the centre-of-mass frame: ADAMS
+    // makes CM optional, and a massless part needs none (docs/theory.md, "Parts as ADAMS
+    // accepts them").
+    if (rp.cm && !onPart(*rp.cm, p.id)) {
       diags.error(rp.s->find("CM")->where, subject,
                   "CM marker " + std::to_string(*rp.cm) + " is not a marker of this part",
                   "Give a MARKER with PART=" + std::to_string(p.id) + ".");
       continue;
     }
-    if (p.mass <= 0.0)
-      diags.error(p.where, subject, "a moving part needs a positive MASS",
-                  "Give MASS=<value> > 0 (or make the part GROUND).");
-    p.position = poses.position.at(*rp.cm);
-    p.orientation = poses.rotation.at(*rp.cm);
+    if (p.mass < 0.0)
+      diags.error(rp.s->find("MASS")->where, subject, "MASS must not be negative",
+                  "Give MASS=<value> >= 0 (0 or no MASS: a massless part held by constraints).");
+    p.position = rp.cm ? poses.position.at(*rp.cm) : rp.qg;
+    p.orientation = rp.cm ? poses.rotation.at(*rp.cm) : rp.a;
     // Inertia about the IM marker (default CM) in IM axes; ADAMS products are +integrals.
     Eigen::Matrix3d iim;
     iim << rp.ip(0), -rp.products(0), -rp.products(1), -rp.products(0), rp.ip(1), -rp.products(2),
         -rp.products(1), -rp.products(2), rp.ip(2);
     Eigen::Matrix3d iG;  // in ground axes, about the CM
-    if (rp.im && *rp.im != *rp.cm) {
+    if (rp.im && (!rp.cm || *rp.im != *rp.cm)) {
       if (!onPart(*rp.im, p.id)) {
         diags.error(rp.s->find("IM")->where, subject,
                     "IM marker " + std::to_string(*rp.im) + " is not a marker of this part",
@@ -232,13 +230,33 @@ void PartBuilder::bodyFrames(const std::map<long, size_t>& rawPartIndex, const G
       iG = p.orientation * iim * p.orientation.transpose();
     }
     p.inertia = p.orientation.transpose() * iG * p.orientation;
+    // Zero principal moments are accepted (a point mass, a massless part, a slender rod): the
+    // constraints must then hold the motions that carry no inertia, which the set-up analysis
+    // checks. Moments that break the triangle inequality describe no rigid body, but ADAMS
+    // runs them (the FAST certification data sets give IP=1e-3,1e-3,4418 for a nacelle) and
+    // the equations need only a positive-semidefinite tensor: a warning. A negative moment
+    // gives negative kinetic energy: an error. The tolerance is relative to the largest
+    // moment: round-off of the parallel-axis transfer is ~1e-16 of it (docs/theory.md, "Parts
+    // as ADAMS accepts them").
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(p.inertia);
     const Eigen::Vector3d pm = eig.eigenvalues();
-    if (pm.minCoeff() <= 0.0 || pm(0) + pm(1) < pm(2) * (1 - 1e-9))
-      diags.error(rp.s->find("IP") ? rp.s->find("IP")->where : p.where, subject,
-                  "the inertia tensor is not physical (principal moments must be positive and "
-                  "satisfy the triangle inequality)",
-                  "Check IP=Ixx,Iyy,Izz[,Ixy,Ixz,Iyz].");
+    const double scale = std::max(pm.cwiseAbs().maxCoeff(), 1e-300);
+    const SourceLocation& ipWhere = rp.s->find("IP") ? rp.s->find("IP")->where : p.where;
+    if (pm.minCoeff() < -1e-9 * scale)
+      diags.error(ipWhere, subject,
+                  "the inertia tensor has a negative principal moment about the CM",
+                  "Check IP=Ixx,Iyy,Izz[,Ixy,Ixz,Iyz] (ADAMS products are +integrals) and, "
+                  "with IM, the parallel-axis transfer to the CM.");
+    else if (pm(0) + pm(1) < pm(2) * (1 - 1e-9))
+      diags.warning(ipWhere, subject,
+                    "the principal moments break the triangle inequality (no rigid body has "
+                    "them); the run uses them as given, as ADAMS does",
+                    "Check IP=Ixx,Iyy,Izz[,Ixy,Ixz,Iyz] if this is not deliberate.");
+    if (pm.minCoeff() < 0.0) {
+      // Round-off below zero: clip to the nearest positive-semidefinite tensor.
+      const Eigen::Vector3d clipped = pm.cwiseMax(0.0);
+      p.inertia = eig.eigenvectors() * clipped.asDiagonal() * eig.eigenvectors().transpose();
+    }
     p.body = model.bodyCount();
     model.movingParts.push_back(static_cast<int>(k));
   }

@@ -150,12 +150,60 @@ TEST(PartBuilder, InitialVelocitiesAndExactCoordinates) {
   EXPECT_EQ(p.exact, (std::array<bool, 6>{true, false, false, true, false, false}));
 }
 
+// ADAMS makes CM optional: without it the part's BCS (QG, REULER) is the centre-of-mass frame
+// and IP is about the BCS origin in BCS axes (or about IM). Without MASS the part is massless.
+TEST(PartBuilder, APartWithoutCmHasItsBcsAsTheCentreOfMassFrame) {
+  const Built b = build(std::string(kHeader) +
+                        "PART/2, MASS=2, IP=1,2,3, QG=1,2,3, REULER=90D,0,0\n"
+                        "MARKER/20, PART=2, QP=1,0,0\n"
+                        "PART/3, QG=0,0,5\n"  // massless, no inertia, no CM
+                        "MARKER/30, PART=3\n"
+                        "PART/4, MASS=3, IM=40, IP=20,20,1\n"  // no CM, inertia about IM
+                        "MARKER/40, PART=4, QP=0,0,2\n"
+                        "END\n");
+  ASSERT_TRUE(b.ok) << ::testing::PrintToString(b.messages());
+  const Part& p = b.part(2);
+  EXPECT_LT((p.position - Eigen::Vector3d(1, 2, 3)).norm(), kTol);
+  EXPECT_LT((p.orientation - rz90()).norm(), kTol);
+  EXPECT_LT((p.inertia - Eigen::Vector3d(1, 2, 3).asDiagonal().toDenseMatrix()).norm(), kTol);
+  // QP in the BCS: one along the BCS x axis, which is ground y.
+  EXPECT_LT((groundPosition(b, 20) - Eigen::Vector3d(1, 3, 3)).norm(), kTol);
+  const Part& q = b.part(3);
+  EXPECT_EQ(q.mass, 0.0);
+  EXPECT_EQ(q.inertia, Eigen::Matrix3d::Zero());
+  EXPECT_LT((q.position - Eigen::Vector3d(0, 0, 5)).norm(), kTol);
+  // IM two above the CM (the BCS origin): I_cm = I_im - m (d.d 1 - d d^T), d = (0, 0, 2).
+  const Part& r = b.part(4);
+  const Eigen::Matrix3d expected = Eigen::Vector3d(8, 8, 1).asDiagonal();
+  EXPECT_LT((r.inertia - expected).norm(), kTol);
+  EXPECT_EQ(b.model.bodyCount(), 3);
+}
+
+// Zero principal moments (a point mass, a slender rod) are accepted; a negative moment is
+// not (negative kinetic energy).
+TEST(PartBuilder, ZeroPrincipalMomentsAreAcceptedAndNegativeOnesAreNot) {
+  const Built b = build(std::string(kHeader) +
+                        "PART/2, MASS=1, CM=20, IP=0,0,0\n"
+                        "MARKER/20, PART=2\n"
+                        "PART/3, MASS=1, CM=30, IP=0,1,1\n"  // a rod along x
+                        "MARKER/30, PART=3\n"
+                        "PART/4, MASS=1, CM=40, IP=-1,1,1\n"
+                        "MARKER/40, PART=4\n"
+                        "END\n");
+  EXPECT_FALSE(b.ok);
+  EXPECT_EQ(b.messages(),
+            (std::vector<std::string>{
+                "p.adm:9:24: error: PART/4: the inertia tensor has a negative principal moment "
+                "about the CM. Check IP=Ixx,Iyy,Izz[,Ixy,Ixz,Iyz] (ADAMS products are "
+                "+integrals) and, with IM, the parallel-axis transfer to the CM."}));
+}
+
 TEST(PartBuilder, EveryInconsistencyIsLocated) {
   const Built b = build(std::string(kHeader) +
                         "MARKER/11, PART=1, QP=1,0,0, ZP=2,0,0, XP=3,0,0\n"  // 5: XP on z
                         "PART/2, MASS=1, CM=20, IP=1,1,1,0\n"                // 6: IP count
                         "MARKER/20, PART=2, RM=10\n"                         // 7: RM elsewhere
-                        "PART/3, MASS=1, IP=1,1,1\n"                         // 8: no CM
+                        "PART/3, MASS=-1, IP=1,1,1\n"                        // 8: MASS < 0
                         "MARKER/30, PART=3\n"
                         "PART/4, MASS=1, CM=40, IM=10, IP=1,1,1\n"  // 10: IM on ground
                         "MARKER/40, PART=4\n"
@@ -177,8 +225,8 @@ TEST(PartBuilder, EveryInconsistencyIsLocated) {
           "without RM. Give a marker of PART/2.",
           "p.adm:6:17: error: PART/2: CM marker 20 is not a marker of this part. Give a MARKER "
           "with PART=2.",
-          "p.adm:8:1: error: PART/3: a moving part needs a CM marker. Add CM=<marker id> "
-          "naming a marker on this part at its centre of mass.",
+          "p.adm:8:9: error: PART/3: MASS must not be negative. Give MASS=<value> >= 0 (0 "
+          "or no MASS: a massless part held by constraints).",
           "p.adm:10:24: error: PART/4: IM marker 10 is not a marker of this part. Give a "
           "MARKER with PART=4."}));
 }
