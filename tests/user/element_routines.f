@@ -17,12 +17,13 @@ C     Spring-damper F = -k (DZ(i,j) - L) - c VZ(i,j); PAR = k, c, L, i, j, parti
       DOUBLE PRECISION PAR(*)
       INTEGER IPAR(2), N
       LOGICAL ERRFLG, NEED
-      DOUBLE PRECISION DISP(6), VEL(6), DDZ(6), DVZ(6)
+      DOUBLE PRECISION DISP(3), VEL(3), DDZ(3), DVZ(3)
       INTEGER K
       IPAR(1) = NINT(PAR(4))
       IPAR(2) = NINT(PAR(5))
-      CALL SYSARY('DISP', IPAR, 2, DISP, N, ERRFLG)
-      CALL ERRMES(ERRFLG, 'SYSARY DISP failed', IPAR(1), 'STOP')
+C     TDISP, not DISP: the 3-1-3 angles DISP adds have no partials at zero rotation.
+      CALL SYSARY('TDISP', IPAR, 2, DISP, N, ERRFLG)
+      CALL ERRMES(ERRFLG, 'SYSARY TDISP failed', IPAR(1), 'STOP')
       CALL SYSARY('TVEL', IPAR, 2, VEL, N, ERRFLG)
       CALL ERRMES(ERRFLG, 'SYSARY TVEL failed', IPAR(1), 'STOP')
       NEED = .FALSE.
@@ -30,13 +31,13 @@ C     Spring-damper F = -k (DZ(i,j) - L) - c VZ(i,j); PAR = k, c, L, i, j, parti
         IF (PAR(6) .NE. 0.0D0) CALL ADAMS_NEEDS_PARTIALS(NEED)
       END IF
       IF (NEED) THEN
-        DO 10 K = 1, 6
+        DO 10 K = 1, 3
           DDZ(K) = 0.0D0
           DVZ(K) = 0.0D0
    10   CONTINUE
         DDZ(3) = -PAR(1)
         DVZ(3) = -PAR(2)
-        CALL SYSPAR('DISP', IPAR, 2, DDZ, 6, ERRFLG)
+        CALL SYSPAR('TDISP', IPAR, 2, DDZ, 3, ERRFLG)
         CALL SYSPAR('TVEL', IPAR, 2, DVZ, 3, ERRFLG)
       END IF
       SPRING = -PAR(1) * (DISP(3) - PAR(3)) - PAR(2) * VEL(3)
