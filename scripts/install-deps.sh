@@ -9,6 +9,7 @@ packages=(
   libsuitesparse-dev     # KLU: sparse LU of large Newton matrices (solvers/klu_linear_solver); SPQR: rank of large constraint Jacobians (mechanics/sparse_constraint_jacobian)
   libsundials-dev        # IDA (DSTIFF) and CVODE's Adams method (ABAM) integrators
   libgtest-dev libgmock-dev  # unit and validation tests
+  gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/element_routines.f)
   libbenchmark-dev       # micro-benchmarks in bench/
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
 )

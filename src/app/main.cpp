@@ -22,6 +22,7 @@
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
+#include "user/element_routine.hpp"
 #include "user/user_library.hpp"
 
 namespace fs = std::filesystem;
@@ -287,8 +288,16 @@ int main(int argc, char** argv) {
       return 1;
     }
     const std::string ext = fs::path(file).extension().string();
-    if (ext == ".acf" || ext == ".ACF") return runCommandFile(file, outdir, quiet);
-    return runModel(file, end, steps, dtout, outdir, quiet);
+    const int status = ext == ".acf" || ext == ".ACF"
+                           ? runCommandFile(file, outdir, quiet)
+                           : runModel(file, end, steps, dtout, outdir, quiet);
+    // A user subroutine that stopped the run (NaN, ERRMES STOP, a crash) is named last
+    // (docs/user-subroutines.md, "Bad user code").
+    if (const std::string fatal = user::firstUserFatal(); status != 0 && !fatal.empty()) {
+      std::fflush(stdout);
+      std::fprintf(stderr, "openmss: error: %s\n", fatal.c_str());
+    }
+    return status;
   }
   if (cmd == "check") {
     if (wantsHelp(argc, argv)) { std::printf("%s", kCheckHelp); return 0; }

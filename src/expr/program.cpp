@@ -64,6 +64,7 @@ Program::Program(const Program& other)
       dataCalls_(other.dataCalls_),
       bindings_(other.bindings_),
       user_(other.user_),
+      userFunction_(other.userFunction_),
       delays_(other.delays_),
       code_(other.code_) {
   if (!fitsOnStack()) scratch_ = std::make_unique<Scratch>(code_);
@@ -216,7 +217,15 @@ T Program::forward(T* v, const Host* hostValues, const T& time, const RunContext
   return v[code_.result];
 }
 
+void Program::bindUser(std::shared_ptr<const UserFunction> f, std::vector<HostCall> dependencies) {
+  userFunction_ = std::move(f);
+  hostCalls_ = std::move(dependencies);
+  user_.reset();
+  code_.usesTime = true;  // a subroutine receives TIME
+}
+
 double Program::evaluate(const double* hostValues, double time, const RunContext* run) const {
+  if (userFunction_) return userFunction_->value(hostValues, time);
   if (fitsOnStack()) {
     double values[kStackSlots];
     return forward(values, hostValues, time, run);
@@ -405,6 +414,12 @@ double Program::evaluateDerivatives(double* values, double* partials, double* ad
 
 double Program::evaluate(const double* hostValues, double time, double* dHost, double* dTime,
                          const RunContext* run) const {
+  if (userFunction_) {
+    double dt = 0.0;
+    const double v = userFunction_->partials(hostValues, time, dHost, &dt);
+    if (dTime != nullptr) *dTime = dt;
+    return v;
+  }
   if (fitsOnStack()) {
     double values[kStackSlots];
     double partials[kStackPartials];
@@ -420,6 +435,7 @@ double Program::evaluate(const double* hostValues, double time, double* dHost, d
 }
 
 TimeJet Program::evaluateTimeJet(double time) const {
+  if (userFunction_ && hostCalls_.empty()) return userFunction_->timeJet(time);
   if (!hostCalls_.empty()) {
     // Precondition violated: a host value has no time jet here.
     const double nan = std::numeric_limits<double>::quiet_NaN();
@@ -438,6 +454,11 @@ TimeJet Program::evaluateTimeJet(double time) const {
 }
 
 TimeJet Program::evaluateJet(const TimeJet* hostJets, double time) const {
+  if (userFunction_) {
+    // No second derivatives along a path through a subroutine (GCONs take no USER).
+    const double nan = std::numeric_limits<double>::quiet_NaN();
+    return {nan, nan, nan};
+  }
   const Jet2 t{time, 0.0, 0.0};
   Jet2 result{};
   if (fitsOnStack()) {

@@ -29,6 +29,7 @@
 #include "expr/expression.hpp"
 #include "expr/jet.hpp"
 #include "expr/run_context.hpp"
+#include "expr/user_function.hpp"
 
 namespace openmss::expr {
 
@@ -142,6 +143,9 @@ class Program {
   const std::vector<DataCall>& dataCalls() const { return dataCalls_; }
   const UserCall* userCall() const { return user_ ? &*user_ : nullptr; }
   void setUserCall(UserCall call) { user_ = std::move(call); }
+  // A USER(...) bound to its subroutine (expr/user_function.hpp): the host calls become the
+  // subroutine's declared measures and every evaluation goes to `f`.
+  void bindUser(std::shared_ptr<const UserFunction> f, std::vector<HostCall> dependencies);
   void setDataCalls(std::vector<DataCall> calls);
   void bindSpline(std::size_t call, std::shared_ptr<const Spline> spline);
   void bindCurve(std::size_t call, std::shared_ptr<const BSplineCurve> curve);
@@ -185,6 +189,7 @@ class Program {
   std::vector<DataCall> dataCalls_;
   std::vector<DataBinding> bindings_;  // bindings_[k] serves dataCalls_[k]
   std::optional<UserCall> user_;
+  std::shared_ptr<const UserFunction> userFunction_;
   std::vector<DelayCall> delays_;
   ProgramCode code_;
   std::unique_ptr<Scratch> scratch_;  // only for programs too large for the stack arrays

@@ -7,6 +7,7 @@
 #include "model/model_builder.hpp"
 #include "model/part_builder.hpp"
 #include "model/statement_arguments.hpp"
+#include "model/user_routine_binding.hpp"
 
 namespace openmss::model {
 namespace {
@@ -259,9 +260,6 @@ void buildVectorForce(const Statement& s, Model& model, Diagnostics& diags) {
   v.kind = s.name == "VFORCE"    ? VectorForce::Kind::VForce
            : s.name == "VTORQUE" ? VectorForce::Kind::VTorque
                                  : VectorForce::Kind::GForce;
-  rejectUserFunction(s, s.name == "VFORCE" ? "VARSUB/VFOSUB"
-                        : s.name == "VTORQUE" ? "VTOSUB" : "GFOSUB",
-                     diags);
   v.iMarker = markerReference(model, s, "I", diags);
   if (s.has("RM")) {
     v.rmMarker = markerReference(model, s, "RM", diags);
@@ -288,6 +286,21 @@ void buildVectorForce(const Statement& s, Model& model, Diagnostics& diags) {
   }
   bool any = false;
   for (const char* name : {"FX", "FY", "FZ", "TX", "TY", "TZ"}) any = any || s.has(name);
+  // FUNCTION=USER(...): the components come from VFOSUB/VTOSUB/GFOSUB, bound with the other
+  // functions (bindForceElementFunctions).
+  if (const Argument* fn = s.find("FUNCTION")) {
+    if (fn->expression.rfind("USER", 0) != 0 || any) {
+      diags.error(fn->where, s.subject(),
+                  any ? "FUNCTION=USER(...) and component expressions exclude each other"
+                      : "FUNCTION= must be USER(r1[,...,r30])",
+                  "Give either the components (FX=, ...) or FUNCTION=USER(...) with ROUTINE=.");
+      return;
+    }
+    any = true;
+  } else if (const Argument* r = s.find("ROUTINE")) {
+    diags.error(r->where, s.subject(), "ROUTINE= without FUNCTION=USER(...)",
+                "Add FUNCTION=USER(r1[,...,r30]) or remove ROUTINE=.");
+  }
   if (!any && !s.has("FUNCTION"))
     diags.error(s.where, s.subject(), "no component is given",
                 std::string("Give ") +
@@ -336,6 +349,23 @@ void bindForceElementFunctions(const std::vector<const Statement*>& statements, 
     const int index = findForceElement(model, kind, *s->id);
     if (index < 0) continue;  // rejected while building
     VectorForce& v = model.vectorForces[index];
+    if (const Argument* fn = s->find("FUNCTION")) {
+      user::ElementData e;
+      e.i = model.markers[static_cast<size_t>(v.iMarker)].id;
+      e.jfloat = model.markers[static_cast<size_t>(v.jFloat)].id;
+      e.rm = model.markers[static_cast<size_t>(v.rmMarker)].id;
+      std::vector<BoundExpression> b(6);
+      const int first = s->name == "VTORQUE" ? 3 : 0, count = s->name == "GFORCE" ? 6 : 3;
+      std::vector<BoundExpression*> outputs;
+      for (int c = 0; c < count; ++c) outputs.push_back(&b[static_cast<size_t>(first + c)]);
+      const user::RoutineKind routine = s->name == "VFORCE"    ? user::RoutineKind::Vfosub
+                                        : s->name == "VTORQUE" ? user::RoutineKind::Vtosub
+                                                               : user::RoutineKind::Gfosub;
+      if (bindUserRoutine(model, *s, *fn, routine, e, outputs, true, diags))
+        for (int c = first; c < first + count; ++c)
+          v.components[static_cast<size_t>(c)] = std::move(b[static_cast<size_t>(c)]);
+      continue;
+    }
     for (int c = 0; c < 6; ++c) {
       const Argument* a = s->find(kNames[c]);
       if (!a) continue;

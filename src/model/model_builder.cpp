@@ -19,6 +19,7 @@
 #include "model/statement_arguments.hpp"
 #include "model/units_table.hpp"
 #include "model/user_equation_builder.hpp"
+#include "model/user_routine_binding.hpp"
 
 namespace openmss::model {
 namespace {
@@ -263,7 +264,15 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
                     BoundExpression& out, bool forConstraint, bool forRequest) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
   if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
-  if (const expr::UserCall* user = out.expression.userCall()) {
+  return bindParsedExpression(model, where, subject, forForces, diags, out, forConstraint,
+                              forRequest);
+}
+
+bool bindParsedExpression(const Model& model, const SourceLocation& where,
+                          const std::string& subject, bool forForces, Diagnostics& diags,
+                          BoundExpression& out, bool forConstraint, bool forRequest) {
+  const expr::UserCall* user = out.expression.userCall();
+  if (user) {
     // USER(...) keeps its constants (expr4); evaluating it needs a loaded subroutine.
     SourceLocation at = where;
     if (where.column > 0) at.column = where.column + user->column - 1;

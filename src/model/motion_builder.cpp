@@ -6,6 +6,7 @@
 #include "model/data_element_builder.hpp"
 #include "model/part_builder.hpp"
 #include "model/statement_arguments.hpp"
+#include "model/user_routine_binding.hpp"
 
 namespace openmss::model {
 namespace {
@@ -129,6 +130,24 @@ bool markerMotion(StatementArguments& a, const Model& model, Motion& m, Diagnost
   return true;
 }
 
+// FUNCTION=USER(...): MOTSUB gives the function and its time derivatives (IORD 0, 1, 2).
+bool userMotion(const Statement& s, const Argument& f, const Model& model, Motion& m,
+                Diagnostics& diags) {
+  user::ElementData e;
+  e.joint = m.joint >= 0 ? model.joints[static_cast<size_t>(m.joint)].id : 0;
+  e.i = model.markers[static_cast<size_t>(m.iMarker)].id;
+  e.j = model.markers[static_cast<size_t>(m.jMarker)].id;
+  e.motionType = m.rotation ? "ROTATION" : "TRANSLATION";
+  e.motionWhich = "XYZ123"[m.axis];
+  e.motionDva = m.form == Motion::Form::Displacement ? "DISPLACEMENT"
+                : m.form == Motion::Form::Velocity   ? "VELOCITY"
+                                                     : "ACCELERATION";
+  BoundExpression b;
+  if (!bindUserRoutine(model, s, f, user::RoutineKind::Motsub, e, {&b}, true, diags)) return false;
+  m.function = std::move(b.expression);
+  return true;
+}
+
 // FUNCTION=: an expression of TIME (and data elements) only. Returns false when it is not.
 bool motionFunction(StatementArguments& a, const Model& model, Motion& m, Diagnostics& diags) {
   const Statement& s = a.statement();
@@ -137,11 +156,7 @@ bool motionFunction(StatementArguments& a, const Model& model, Motion& m, Diagno
     a.require("FUNCTION", "<expression of TIME>");
     return false;
   }
-  if (f->expression.rfind("USER", 0) == 0) {
-    a.error(*f, "FUNCTION=USER(...) motions are not supported yet",
-            "Write the motion as a function expression of TIME.");
-    return false;
-  }
+  if (f->expression.rfind("USER", 0) == 0) return userMotion(s, *f, model, m, diags);
   if (!expr::Expression::parse(f->expression, f->valueWhere, s.subject(), diags, m.function))
     return false;
   if (!bindDataCalls(model, m.function, f->valueWhere, s.subject(), diags)) return false;

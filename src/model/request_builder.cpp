@@ -6,6 +6,7 @@
 #include "model/model_builder.hpp"
 #include "model/part_builder.hpp"
 #include "model/statement_arguments.hpp"
+#include "model/user_routine_binding.hpp"
 
 namespace openmss::model {
 namespace {
@@ -49,9 +50,23 @@ void buildRequest(const Statement& s, Model& model, Diagnostics& diags) {
     }
   bool hasF = false;
   for (int c = 0; c < 8; ++c) hasF |= s.has(("F" + std::to_string(c + 1)).c_str());
-  if (s.has("FUNCTION")) {
-    a.error(*s.find("FUNCTION"), "FUNCTION=USER(...) requests (REQSUB) are not supported yet",
-            "Use F1..F8 expressions or DISPLACEMENT/VELOCITY/ACCELERATION/FORCE.");
+  if (const Argument* fn = s.find("FUNCTION")) {
+    // REQSUB's eight values are the request's columns, as F1..F8 would be.
+    if (fn->expression.rfind("USER", 0) != 0 || nKinds > 0 || hasF) {
+      a.error(*fn, "FUNCTION= must be USER(r1[,...,r30]) and excludes the other kinds",
+              "Keep FUNCTION=USER(...) (REQSUB) alone, or use F1..F8 expressions.");
+      return;
+    }
+    std::vector<BoundExpression> b(8);
+    std::vector<BoundExpression*> outputs;
+    for (BoundExpression& x : b) outputs.push_back(&x);
+    user::ElementData e;
+    e.comment = r.comment;
+    if (!bindUserRoutine(model, s, *fn, user::RoutineKind::Reqsub, e, outputs, false, diags,
+                         /*forRequest=*/true))
+      return;
+    for (size_t c = 0; c < 8; ++c) r.columns[c] = std::move(b[c]);
+    model.requests.push_back(std::move(r));
     return;
   }
   if (nKinds > 1 || (nKinds == 1 && hasF)) {

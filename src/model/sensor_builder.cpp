@@ -4,6 +4,7 @@
 
 #include "model/model_builder.hpp"
 #include "model/statement_arguments.hpp"
+#include "model/user_routine_binding.hpp"
 
 namespace openmss::model {
 
@@ -77,18 +78,12 @@ void buildSensors(const language::Dataset& dataset, Model& model, Diagnostics& d
     if (const Argument* a = s.find("YYDUMP"))
       fail(a->where, "YYDUMP (a dump of the state vector at the event) is not supported",
            "Remove YYDUMP; add PRINT to write an output step at the event instead.");
-    if (const Argument* a = s.find("ROUTINE"))
-      fail(a->where, "ROUTINE= (a user-written SENSUB/SEVSUB) is not supported",
-           "Write FUNCTION= and EVALUATE= as function expressions.");
-    if (const Argument* a = s.find("EVALUATE_ROUTINE"))
-      fail(a->where, "EVALUATE_ROUTINE= (a user-written SEVSUB) is not supported",
-           "Write EVALUATE= as a function expression.");
-    if (const Argument* a = s.find("FUNCTION"); a && isUserSubroutine(*a))
-      fail(a->where, "FUNCTION=USER(...) (SENSUB) is not supported",
-           "Write the sensor function as a function expression.");
-    if (const Argument* a = s.find("EVALUATE"); a && isUserSubroutine(*a))
-      fail(a->where, "EVALUATE=USER(...) (SEVSUB) is not supported",
-           "Write EVALUATE= as a function expression.");
+    if (const Argument* a = s.find("ROUTINE"); a && !s.has("FUNCTION"))
+      fail(a->where, "ROUTINE= without FUNCTION=USER(...)",
+           "ROUTINE=lib::name names the SENSUB of FUNCTION=USER(...); add it or remove ROUTINE.");
+    if (const Argument* a = s.find("EVALUATE_ROUTINE"); a && !s.has("EVALUATE"))
+      fail(a->where, "EVALUATE_ROUTINE= without EVALUATE=USER(...)",
+           "EVALUATE_ROUTINE=lib::name names the SEVSUB of EVALUATE=USER(...).");
 
     const bool acts = sensor.halt || sensor.print || sensor.restart || sensor.returnToCommands ||
                       sensor.outputInterval || sensor.stepSize || s.has("EVALUATE");
@@ -111,12 +106,24 @@ void bindSensorFunctions(const language::Dataset& dataset, Model& model, Diagnos
     Sensor& sensor = model.sensors[next++];
     // Sensor functions may read accelerations and reaction forces, as requests do: they are
     // evaluated on solved states, never inside the equations.
-    if (const Argument* f = s.find("FUNCTION"); f && !isUserSubroutine(*f))
+    user::ElementData data;
+    data.sensorValue = sensor.value;
+    data.sensorError = sensor.error;
+    data.sensorLogic = sensor.test == Sensor::Test::Eq   ? 'E'
+                       : sensor.test == Sensor::Test::Ge ? 'G'
+                                                         : 'L';
+    if (const Argument* f = s.find("FUNCTION"); f && isUserSubroutine(*f))
+      bindUserRoutine(model, s, *f, user::RoutineKind::Sensub, data, {&sensor.function}, false,
+                      diags);
+    else if (f)
       bindExpression(model, f->expression, f->valueWhere, s.subject(), false, diags,
                      sensor.function);
-    if (const Argument* e = s.find("EVALUATE"); e && !isUserSubroutine(*e)) {
+    if (const Argument* e = s.find("EVALUATE")) {
       BoundExpression b;
-      if (bindExpression(model, e->expression, e->valueWhere, s.subject(), false, diags, b))
+      if (isUserSubroutine(*e)
+              ? bindUserRoutine(model, s, *e, user::RoutineKind::Sevsub, data, {&b}, false, diags,
+                                false, "EVALUATE_ROUTINE")
+              : bindExpression(model, e->expression, e->valueWhere, s.subject(), false, diags, b))
         sensor.evaluate = std::move(b);
     }
   }

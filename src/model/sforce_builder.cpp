@@ -5,6 +5,7 @@
 #include "model/model_builder.hpp"
 #include "model/part_builder.hpp"
 #include "model/statement_arguments.hpp"
+#include "model/user_routine_binding.hpp"
 
 namespace openmss::model {
 
@@ -43,8 +44,13 @@ void bindSForceFunctions(const std::vector<const Statement*>& statements, Model&
     if (k >= model.sforces.size() || !s->id || model.sforces[k].id != *s->id) continue;
     const Argument* fn = s->find("FUNCTION");
     if (fn->expression.rfind("USER", 0) == 0) {
-      diags.error(fn->where, s->subject(), "FUNCTION=USER(...) (SFOSUB) is not supported yet",
-                  "Write the force as a function expression.");
+      SForce& f = model.sforces[k];
+      user::ElementData e;
+      e.i = model.markers[static_cast<size_t>(f.iMarker)].id;
+      e.j = model.markers[static_cast<size_t>(f.jMarker)].id;
+      e.actionOnly = f.actionOnly;
+      e.rotation = f.rotation;
+      bindUserRoutine(model, *s, *fn, user::RoutineKind::Sfosub, e, {&f.function}, true, diags);
     } else {
       bindExpression(model, fn->expression, fn->valueWhere, s->subject(), true, diags,
                      model.sforces[k].function);

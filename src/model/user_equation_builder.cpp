@@ -9,6 +9,7 @@
 #include "model/model_builder.hpp"
 #include "model/statement_arguments.hpp"
 #include "model/user_equation_context.hpp"
+#include "model/user_routine_binding.hpp"
 #include "model/user_subroutine_arguments.hpp"
 
 namespace openmss::model {
@@ -219,10 +220,19 @@ void bindUserEquationFunctions(const std::vector<const Statement*>& statements, 
     const Argument* fn = s->find("FUNCTION");
     if (!fn) continue;  // the reader reported the missing FUNCTION
     if (fn->expression.rfind("USER", 0) == 0) {
-      diags.error(fn->where, s->subject(),
-                  std::string("FUNCTION=USER(...) (") +
-                      (s->name == "VARIABLE" ? "VARSUB" : "DIFSUB") + ") is not supported yet",
-                  "Write the function as an expression.");
+      user::ElementData e;
+      user::RoutineKind kind = user::RoutineKind::Varsub;
+      if (s->name == "VARIABLE") {
+        e.ic = model.variables[nextVariable - 1].ic.value_or(0.0);
+      } else {
+        const Diff& d = model.diffs[nextDiff - 1];
+        kind = user::RoutineKind::Difsub;
+        e.ic = d.ic;
+        e.icDerivative = d.icDerivative.value_or(0.0);
+        e.staticHold = d.staticHold;
+        e.implicit = d.implicit;
+      }
+      bindUserRoutine(model, *s, *fn, kind, e, {target}, true, diags);
       continue;
     }
     bindExpression(model, fn->expression, fn->valueWhere, s->subject(), true, diags, *target);

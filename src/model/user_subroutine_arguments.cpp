@@ -88,6 +88,12 @@ std::optional<std::vector<double>> userParameters(const Statement& s, Diagnostic
   return par;
 }
 
+user::RoutineName elementRoutineName(const Statement& s, const char* argument) {
+  const Argument* r = s.find(argument);
+  if (!r || r->values.empty()) return {};
+  return user::splitRoutineName(writtenValues(*r).at(0));
+}
+
 user::GseRoutineNames gseRoutineNames(const Statement& s, Diagnostics& diags, bool& ok) {
   user::GseRoutineNames names;
   if (const Argument* r = s.find("ROUTINE")) {

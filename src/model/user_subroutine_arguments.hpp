@@ -18,6 +18,10 @@ namespace openmss::model {
 // that reads the model.
 std::optional<std::vector<double>> userParameters(const language::Statement& s, Diagnostics& diags);
 
+// ROUTINE=lib::name (or EVALUATE_ROUTINE=) of a one-routine element, case kept (empty parts: the defaults).
+user::RoutineName elementRoutineName(const language::Statement& s,
+                                     const char* argument = "ROUTINE");
+
 // The four GSE routines' library and name: INTERFACE= entries in the order DERIV, OUTPUT,
 // UPDATE, SAMP, or ROUTINE=lib (or lib::) for all four under their default names. `ok` is
 // cleared with a diagnostic for a ROUTINE that names one routine (a GSE has four).

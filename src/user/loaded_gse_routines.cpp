@@ -6,6 +6,8 @@
 #include <cstring>
 #include <limits>
 
+#include "user/element_call.hpp"
+#include "user/gse_call.hpp"
 #include "user/openmss_usersub.h"
 
 namespace openmss::user {
@@ -180,6 +182,7 @@ std::shared_ptr<const GseRoutines> loadGseRoutines(const GseDescription& descrip
                                                    const GseRoutineNames& names,
                                                    const std::string& baseDirectory,
                                                    std::vector<std::string>& errors) {
+  detail::anchorUtilities();
   auto gse = std::make_shared<LoadedGse>(description);
   const size_t errorsBefore = errors.size();
   std::vector<std::pair<std::string, std::shared_ptr<Library>>> opened;
@@ -246,18 +249,19 @@ std::shared_ptr<const GseRoutines> loadGseRoutines(const GseDescription& descrip
 
 }  // namespace openmss::user
 
-// ---- The utility subroutines user routines call (user/openmss_usersub.h) ----------------
-// Exported from the program (ENABLE_EXPORTS) so that a user library resolves them at load.
+// ---- The utility subroutines as a GSE routine sees them --------------------------------
+// utility_subroutines.cpp exports c_sysary & co. and hands a call here while a GSE routine
+// runs (gse_call.hpp).
 
-using openmss::user::current;
+namespace openmss::user::detail {
 
-extern "C" {
+bool gseCallActive() { return current != nullptr; }
 
-void c_sysary(const char* fncnam, const int* ipar, int nsize, double* states, int* nstates,
-              int* errflg) {
+void gseSysary(const char* fncnam, const int* ipar, int nsize, double* states, int* nstates,
+               int* errflg) {
   *errflg = 1;
   *nstates = 0;
-  if (!current || !fncnam || openmss::user::upper(fncnam) != "ARRAY" || nsize < 1) return;
+  if (!current || !fncnam || upper(fncnam) != "ARRAY" || nsize < 1) return;
   int size = 0;
   bool zeros = false;
   const double* v = current->gse->arrayValues(ipar[0], size, zeros);
@@ -267,10 +271,10 @@ void c_sysary(const char* fncnam, const int* ipar, int nsize, double* states, in
   *errflg = 0;
 }
 
-void c_sysfnc(const char* fncnam, const int* ipar, int nsize, double* state, int* errflg) {
+void gseSysfnc(const char* fncnam, const int* ipar, int nsize, double* state, int* errflg) {
   *errflg = 1;
   *state = 0.0;
-  if (!current || !fncnam || openmss::user::upper(fncnam) != "ARYVAL" || nsize < 2) return;
+  if (!current || !fncnam || upper(fncnam) != "ARYVAL" || nsize < 2) return;
   int size = 0;
   bool zeros = false;
   const double* v = current->gse->arrayValues(ipar[0], size, zeros);
@@ -279,13 +283,11 @@ void c_sysfnc(const char* fncnam, const int* ipar, int nsize, double* state, int
   *errflg = 0;
 }
 
-void c_syspar(const char* fncnam, const int* ipar, int nsize, const double* partials, int npartl,
-              int* errflg) {
+void gseSyspar(const char* fncnam, const int* ipar, int nsize, const double* partials, int npartl,
+               int* errflg) {
   *errflg = 1;
-  if (!current || !current->partials || !fncnam || openmss::user::upper(fncnam) != "ARRAY" ||
-      nsize < 1)
-    return;
-  const openmss::user::GseDescription& d = current->gse->description();
+  if (!current || !current->partials || !fncnam || upper(fncnam) != "ARRAY" || nsize < 1) return;
+  const GseDescription& d = current->gse->description();
   const int rows = current->rows;
   std::optional<std::vector<double>>* block = nullptr;
   int cols = 0;
@@ -301,37 +303,37 @@ void c_syspar(const char* fncnam, const int* ipar, int nsize, const double* part
   *errflg = 0;
 }
 
-void c_adams_needs_partials(int* eval_jac) {
+void gseNeedsPartials(int* eval_jac) {
   *eval_jac = current && current->partials && !current->initialization ? 1 : 0;
 }
 
-int c_gse_ns(void) { return current ? current->gse->description().ns : 0; }
-int c_gse_nd(void) { return current ? current->gse->description().nd : 0; }
-int c_gse_ni(void) { return current ? current->gse->description().ni : 0; }
-int c_gse_no(void) { return current ? current->gse->description().no : 0; }
+int gseNs() { return current ? current->gse->description().ns : 0; }
+int gseNd() { return current ? current->gse->description().nd : 0; }
+int gseNi() { return current ? current->gse->description().ni : 0; }
+int gseNo() { return current ? current->gse->description().no : 0; }
 
-static void copyArray(long id, double* out, int n) {
+void copyArray(long id, double* out, int n) {
   if (!current) return;
   int size = 0;
   bool zeros = false;
   const double* v = current->gse->arrayValues(id, size, zeros);
   for (int k = 0; k < n && k < size && v; ++k) out[k] = zeros ? 0.0 : v[k];
 }
-void c_gse_x(double* x, int ns) {
+void gseX(double* x, int ns) {
   if (current) copyArray(current->gse->description().xArray, x, ns);
 }
-void c_gse_xd(double* xd, int nd) {
+void gseXd(double* xd, int nd) {
   if (current) copyArray(current->gse->description().xdArray, xd, nd);
 }
-void c_gse_u(double* u, int ni) {
+void gseU(double* u, int ni) {
   if (current) copyArray(current->gse->description().uArray, u, ni);
 }
 
-void c_timget(double* time) { *time = current ? current->args->time : 0.0; }
+void gseTimget(double* time) { *time = current ? current->args->time : 0.0; }
 
-void c_errmes(int errflg, const char* mesage, int id, const char* endflg) {
+void gseErrmes(int errflg, const char* mesage, int id, const char* endflg) {
   if (!errflg) return;
-  const std::string end = endflg ? openmss::user::upper(endflg) : "";
+  const std::string end = endflg ? upper(endflg) : "";
   const std::string text = std::string("ERRMES from the routine of GSE/") + std::to_string(id) +
                            ": " + (mesage ? mesage : "");
   if (current && (end.rfind("STOP", 0) == 0 || end.rfind("ERROR", 0) == 0)) {
@@ -341,10 +343,4 @@ void c_errmes(int errflg, const char* mesage, int id, const char* endflg) {
   std::fprintf(stderr, "openmss: %s\n", text.c_str());
 }
 
-void c_usrmes(int msgflg, const char* mesage, int id, const char* msgtyp) {
-  if (!msgflg) return;
-  std::fprintf(stderr, "openmss: USRMES %s (id %d): %s\n", msgtyp ? msgtyp : "", id,
-               mesage ? mesage : "");
-}
-
-}  // extern "C"
+}  // namespace openmss::user::detail

@@ -5,8 +5,9 @@
  * routine reads its states and inputs back through the utility subroutines below, which the
  * openmss program exports.
  *
- * Only what a GSE needs is offered; every utility reports unsupported requests through its
- * error flag rather than guessing. */
+ * Every utility reports unsupported requests through its error flag rather than guessing.
+ * FORTRAN-77 libraries call the same utilities under their gfortran names (sysfnc_, sysary_,
+ * errmes_, ...), all arguments by reference, string lengths appended (docs/user-subroutines.md). */
 #ifndef OPENMSS_USERSUB_H
 #define OPENMSS_USERSUB_H
 
@@ -76,6 +77,144 @@ void c_timget(double* time);
  * "STOP" or "ERROR" makes the error fatal (the run stops with it). */
 void c_errmes(int errflg, const char* mesage, int id, const char* endflg);
 void c_usrmes(int msgflg, const char* mesage, int id, const char* msgtyp);
+
+/* ---- Evaluation subroutines of FUNCTION=USER(...) elements (docs/user-subroutines.md) ----
+ * The element as a C-style routine sees it; field order and types are ADAMS's (binary
+ * compatibility). Marker and element ids are the data set's. */
+struct sAdamsSforce {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int I;
+  int J;
+  int ACTION_ONLY;
+  const char* Type; /* "TRANSLATION" or "ROTATION" */
+};
+struct sAdamsVforce {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int I;
+  int JFLOAT;
+  int RM;
+};
+struct sAdamsVtorque {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int I;
+  int JFLOAT;
+  int RM;
+};
+struct sAdamsGforce {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int I;
+  int RM;
+  int JFLOAT;
+};
+struct sAdamsVariable {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  double IC;
+};
+struct sAdamsDiff {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int STATIC_HOLD;
+  int IMPLICIT;
+  double IC_R1;
+  double IC_R2;
+};
+struct sAdamsMotion {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int JOINT;
+  const char* Type;
+  int I;
+  int J;
+  char Which[2];
+  const char* DVA;
+};
+struct sAdamsRequest {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  const char* COMMENT;
+  const char* TITLE[8];
+};
+struct sAdamsSensor {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  double VALUE;
+  double Error;
+  char Logic[2];
+};
+
+typedef void adams_c_Sfosub(const struct sAdamsSforce* sforce, double time, int dflag, int iflag,
+                            double* result);
+typedef void adams_c_Vfosub(const struct sAdamsVforce* vforce, double time, int dflag, int iflag,
+                            double* result);
+typedef void adams_c_Vtosub(const struct sAdamsVtorque* vtorque, double time, int dflag,
+                            int iflag, double* result);
+typedef void adams_c_Gfosub(const struct sAdamsGforce* gforce, double time, int dflag, int iflag,
+                            double* result);
+typedef void adams_c_Varsub(const struct sAdamsVariable* variable, double time, int dflag,
+                            int iflag, double* result);
+typedef void adams_c_Difsub(const struct sAdamsDiff* diff, double time, int dflag, int iflag,
+                            double* result);
+typedef void adams_c_Motsub(const struct sAdamsMotion* motion, double time, int iord, int iflag,
+                            double* result);
+typedef void adams_c_Reqsub(const struct sAdamsRequest* request, double time, int iflag,
+                            double* output);
+typedef void adams_c_Sensub(const struct sAdamsSensor* sensor, double time, int iflag,
+                            double* output);
+typedef void adams_c_Sevsub(const struct sAdamsSensor* sensor, double time, int iflag,
+                            double* output);
+
+/* General functions: the iord-th derivative (0, 1, 2) in x of the expression function of the
+ * same name; *errflg nonzero on a bad argument. IMPACT and BISTOP return in vec[0] the force,
+ * vec[1] its partial in x and vec[2] its partial in dxdt (iord is ignored). */
+void c_step(double x, double x0, double h0, double x1, double h1, int iord, double* value,
+            int* errflg);
+void c_step5(double x, double x0, double h0, double x1, double h1, int iord, double* value,
+             int* errflg);
+void c_havsin(double x, double x0, double h0, double x1, double h1, int iord, double* value,
+              int* errflg);
+void c_shf(double x, double x0, double a, double w, double phi, double b, int iord, double* value,
+           int* errflg);
+void c_poly(double x, double x0, const double* par, int npar, int iord, double* value,
+            int* errflg);
+void c_cheby(double x, double x0, const double* par, int npar, int iord, double* value,
+             int* errflg);
+void c_forcos(double x, double x0, double w, const double* par, int npar, int iord,
+              double* value, int* errflg);
+void c_forsin(double x, double x0, double w, const double* par, int npar, int iord,
+              double* value, int* errflg);
+void c_impact(double x, double dxdt, double x1, double k, double e, double cmax, double d,
+              int iord, double* vec, int* errflg);
+void c_bistop(double x, double dxdt, double x1, double x2, double k, double e, double cmax,
+              double d, int iord, double* vec, int* errflg);
+/* Model data of the calling routine's model: SPLINE/id by Akima or cubic interpolation (iord 0:
+ * array[0] = y; 1: dy/dx, dy/dz; 2: d2y/dx2, d2y/dxdz, d2y/dz2), CURVE/id (x, y, z or their
+ * iord-th derivative in alpha), the values of an IC or constant ARRAY/id, STRING/id. */
+void c_akispl(double xval, double zval, int id, int iord, double* array, int* errflg);
+void c_cubspl(double xval, double zval, int id, int iord, double* array, int* errflg);
+void c_gtcurv(int id, double alpha, int iord, double* array, int* istat);
+void c_gtaray(int id, double* array, int* number, int* istat);
+void c_gtstrg(int id, char* string, int* nchars, int* istat);
+/* Rotation coordinates from system sys1 to sys2: EULER (3-1-3), EULPAR, RODPAR, COSINES
+ * (column by column), YPR, B123 ... B323 (body-fixed sequences); *istat nonzero on an
+ * unknown system. */
+void c_rcnvrt(const char* sys1, const double* coord1, const char* sys2, double* coord2,
+              int* istat);
+/* Deterministic CPU time: always 0 (OpenMSS outputs are bit-identical run to run). */
+void c_getcpu(double* cpu);
 
 #ifdef __cplusplus
 }

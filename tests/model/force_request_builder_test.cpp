@@ -66,8 +66,12 @@ TEST(SForceBuilder, WrongForcesAreLocated) {
           "TRANSLATION (a force along I-J) or ROTATION (a torque about zJ).",
           "f.adm:9:30: error: SFORCE/2: J=99: marker 99 does not exist. Use the id of a MARKER "
           "statement of this data set.",
-          "f.adm:10:36: error: SFORCE/3: FUNCTION=USER(...) (SFOSUB) is not supported yet. "
-          "Write the force as a function expression.",
+          "f.adm:10:36: error: SFORCE/3: "
+          "FUNCTION=USER(...) needs the user subroutine SFOSUB, and no user library is named: "
+          "the statement has no ROUTINE=lib::name and no default library was given (openmss run "
+          "--user-library LIB). Supply the library that defines SFOSUB (ROUTINE=lib::name on the "
+          "statement, or openmss run --user-library LIB); docs/user-subroutines.md says how to "
+          "build one.",
           "f.adm:11:45: error: SFORCE/4: SFORCE: SFORCE/7 does not exist. Use the id of a "
           "SFORCE statement of this data set.",
           // and, independently, a force may not read a force element yet
@@ -125,8 +129,12 @@ TEST(RequestBuilder, WrongRequestsAreLocated) {
           "VELOCITY, ACCELERATION or FORCE with I=, or F2=... expressions.",
           "f.adm:10:1: error: REQUEST/3: DISPLACEMENT, VELOCITY, ACCELERATION, FORCE and F1..F8 "
           "exclude each other. Keep one kind of request per REQUEST statement.",
-          "f.adm:11:12: error: REQUEST/4: FUNCTION=USER(...) requests (REQSUB) are not "
-          "supported yet. Use F1..F8 expressions or DISPLACEMENT/VELOCITY/ACCELERATION/FORCE.",
+          "f.adm:11:12: error: REQUEST/4: "
+          "FUNCTION=USER(...) needs the user subroutine REQSUB, and no user library is named: "
+          "the statement has no ROUTINE=lib::name and no default library was given (openmss run "
+          "--user-library LIB). Supply the library that defines REQSUB (ROUTINE=lib::name on the "
+          "statement, or openmss run --user-library LIB); docs/user-subroutines.md says how to "
+          "build one.",
           "f.adm:12:15: error: REQUEST/5: CPU: CPU time is not available: it differs from run "
           "to run, and OpenMSS keeps its outputs bit-identical across runs. Remove CPU; NRHS "
           "(residual evaluations) or NJAC measure the solver's effort reproducibly."}));

@@ -84,7 +84,7 @@ TEST(SensorChecks, EveryErrorIsReportedWithItsLine) {
            "s.adm:8:37: error: SENSOR/2: ERROR must be positive",
            "s.adm:8:46: error: SENSOR/2: CODGEN (a new pivot sequence",
            "s.adm:8:54: error: SENSOR/2: YYDUMP (a dump of the state vector",
-           "s.adm:9:11: error: SENSOR/3: FUNCTION=USER(...) (SENSUB) is not supported",
+           "s.adm:9:11: error: SENSOR/3: FUNCTION=USER(...) needs the user subroutine SENSUB",
            "s.adm:9:38: error: SENSOR/3: DT (the new output interval) must be positive",
            "s.adm:10:20: error: SENSOR/4: DZ: marker 99 does not exist",
            "s.adm:10:29: error: SENSOR/4: SENVAL: SENSOR/8 does not exist",
