@@ -27,6 +27,8 @@ std::string forceElementName(const model::Model& m, const mechanics::ForceElemen
                                                                       : "VFORCE";
       return std::string(name) + "/" + std::to_string(f.id);
     }
+    case K::MultiPoint:
+      return "NFORCE/" + std::to_string(m.nforces[e.index].id);
   }
   return "?";
 }

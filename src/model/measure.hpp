@@ -28,6 +28,9 @@ enum class MeasureKind {
   // Model::springDampers, linearFields (BUSH, FIELD, BEAM) or vectorForces (VFORCE...).
   SpringDamperForce, BushingForce, FieldForce, BeamForce, VForceForce, VTorqueForce,
   GForceForce,
+  // NFORCE(id, marker, comp, rm): `element` indexes Model::nforces, `i` the marker (one of
+  // its I markers or its J) whose force is read.
+  NForceForce,
   // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
   // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
   VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
@@ -75,7 +78,7 @@ struct Measure {
       case MeasureKind::SpringDamperForce: case MeasureKind::BushingForce:
       case MeasureKind::FieldForce: case MeasureKind::BeamForce:
       case MeasureKind::VForceForce: case MeasureKind::VTorqueForce:
-      case MeasureKind::GForceForce:
+      case MeasureKind::GForceForce: case MeasureKind::NForceForce:
       case MeasureKind::NetForce:
         return true;
       default:

@@ -69,12 +69,7 @@ TEST(SForceBuilder, WrongForcesAreLocated) {
           "f.adm:10:36: error: SFORCE/3: FUNCTION=USER(...) (SFOSUB) is not supported yet. "
           "Write the force as a function expression.",
           "f.adm:11:45: error: SFORCE/4: SFORCE: SFORCE/7 does not exist. Use the id of a "
-          "SFORCE statement of this data set.",
-          // and, independently, a force may not read a force element yet
-          "f.adm:11:45: error: SFORCE/4: SFORCE: force read-backs (SFORCE, SPDP, BUSH, FIELD, "
-          "BEAM, VFORCE, VTORQ, GFORCE, FX..TM) are not supported yet in force, VARIABLE or "
-          "DIFF functions. Use it in a REQUEST; JOINT, JPRIM and MOTION reactions and "
-          "accelerations are supported here."}));
+          "SFORCE statement of this data set."}));
 }
 
 TEST(RequestBuilder, KindsMarkersAndColumns) {
