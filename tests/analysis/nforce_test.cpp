@@ -134,8 +134,9 @@ TEST(NForce, NewtonMatrixMatchesCentralDifferences) {
         ++nonzeros;
         EXPECT_EQ(in(r, c), 1) << r << ", " << c;
       }
-  // The coupling entry: d(force row of body 0, z) / d(z of body 1) = +8 (K_12 = -8, minus sign).
-  EXPECT_NEAR(jac(l.body(0) + StateLayout::kV + 2, l.body(1) + StateLayout::kR + 2), 8.0, 1e-9);
+  // The coupling entry: the force row of body 0 along z is m v' - F with F = -16 u1 + 8 u2, so
+  // its derivative with respect to z of body 1 is -8 (K_12).
+  EXPECT_NEAR(jac(l.body(0) + StateLayout::kV + 2, l.body(1) + StateLayout::kR + 2), -8.0, 1e-9);
   std::printf(
       "NFORCE Newton matrix: %d x %d entries compared, %d nonzero, largest relative "
       "difference %.2e\n",
