@@ -247,8 +247,7 @@ void applyDebugArguments(const Statement& s, DebugSettings& debug, Diagnostics& 
 }
 
 bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
-                    const std::string& subject, bool /*forForces: every measure is now allowed in force,
-                    VARIABLE and DIFF functions (docs/theory.md §4b, §4d)*/, Diagnostics& diags,
+                    const std::string& subject, bool /*forForces*/, Diagnostics& diags,
                     BoundExpression& out, bool forConstraint, bool forRequest) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
   if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
