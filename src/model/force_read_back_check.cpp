@@ -41,6 +41,8 @@ class ReadBackGraph {
   }
   void addFunction(int node, const BoundExpression& f) {
     for (const Measure& ms : f.measures) {
+      // A read-back of an element that does not exist was reported while binding.
+      if (ms.kind != MeasureKind::NetForce && ms.element < 0) continue;
       switch (ms.kind) {
         case MeasureKind::SForceForce:
           edges_[node].push_back(ms.element);
