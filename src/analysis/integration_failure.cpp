@@ -29,6 +29,8 @@ std::string forceElementName(const model::Model& m, const mechanics::ForceElemen
     }
     case K::Friction:
       return "FRICTION/" + std::to_string(m.frictions[e.index].id);
+    case K::MultiPoint:
+      return "NFORCE/" + std::to_string(m.nforces[e.index].id);
   }
   return "?";
 }

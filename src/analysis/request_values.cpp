@@ -64,7 +64,8 @@ std::optional<mechanics::ForceElementRef> forceElementOf(model::MeasureKind kind
 // so that a read-back of a force whose function reads them gives the force the DAE applied.
 mechanics::DynamicReads<double> readsOf(const mechanics::MultibodySystem& s,
                                         const Eigen::VectorXd& yp) {
-  return {yp.data(), &s.constraints()};
+  const mechanics::DynamicReads<double> base{yp.data(), &s.constraints()};
+  return s.forceElements().readsWith(&base);  // functions may read forces (theory.md §4d)
 }
 
 // Sum of the force elements acting on `marker` (as I, or as J / JFLOAT), only those between
@@ -176,41 +177,15 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
       elementForce(s, ms.kind, ms.element, ms.atJ == 1, t, y, yp, f, tq);
       return component(f, tq, ms.component, k);
     }
-    case K::NetForce: {
-      // C++ semantics: with j omitted or 0 every element acting on marker i; with j, only the
-      // elements acting between i and j. Components in k axes (ground when omitted).
-      const auto& m = s.model();
-      Eigen::Vector3d ft = Eigen::Vector3d::Zero(), tt = Eigen::Vector3d::Zero(), f, tq;
-      auto acts = [&](int a, int b) {
-        return (a == ms.i && (ms.j < 0 || b == ms.j)) || (b == ms.i && (ms.j < 0 || a == ms.j));
-      };
-      for (int e = 0; e < static_cast<int>(m.joints.size()); ++e)
-        if (acts(m.joints[e].iMarker, m.joints[e].jMarker)) {
-          s.elementReaction(false, e, ms.i, y.data(), f, tq);
-          ft += f;
-          tt += tq;
-        }
-      for (int e = 0; e < static_cast<int>(m.jprims.size()); ++e)
-        if (acts(m.jprims[e].iMarker, m.jprims[e].jMarker)) {
-          s.elementReaction(mechanics::MultibodySystem::ConstraintElement::JPrim, e, ms.i,
-                            y.data(), f, tq);
-          ft += f;
-          tt += tq;
-        }
-      for (int e = 0; e < static_cast<int>(m.motions.size()); ++e) {
-        const auto& jt = m.motions[e];  // the markers it acts between
-        if (acts(jt.iMarker, jt.jMarker)) {
-          s.elementReaction(true, e, ms.i, y.data(), f, tq);
-          ft += f;
-          tt += tq;
-        }
-      }
-      addGconReactions(s, ms.i, ms.j, y, ft, tt);
-      // Applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...).
-      forceElementsOnMarker(s, ms.i, ms.j, t, y, yp, f, tq);
-      ft += f;
-      tt += tq;
-      return component(ft, tt, ms.component, k);
+    case K::NetForce: case K::NForceForce: {
+      // FX..TM (C++ semantics: with j omitted or 0 every element acting on marker i; with j,
+      // only those acting between i and j; components in k axes) and NFORCE(id, marker, ...):
+      // the function read-back itself (mechanics/force_read_back.hpp), one definition for
+      // outputs and functions.
+      const mechanics::DynamicReads<double> reads = readsOf(s, yp);
+      double value = 0.0;
+      s.forceElements().readBack(ms, t, y.data(), &reads, &value);
+      return value;
     }
     case K::FrictionOutput:
       return mechanics::friction::frictionOutput(s.model(), s.layout(), &s.constraints(),

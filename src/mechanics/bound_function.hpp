@@ -54,7 +54,9 @@ T evaluateFunction(const model::Model& m, const StateLayout& l, const model::Bou
   }
   for (size_t k = 0; k < n; ++k)
     if (!kinematicMeasure(m, l, f.measures[k], y, &hv[k], run) &&
-        !dynamicMeasure(m, l, f.measures[k], y, reads, &hv[k]))
+        !dynamicMeasure(m, l, f.measures[k], y, reads, &hv[k]) &&
+        !(reads != nullptr && reads->forceReadBack != nullptr &&
+          reads->forceReadBack(reads->forces, f.measures[k], t, y, reads, &hv[k])))
       hv[k] = T(0.0);  // kinds the model builder refuses in functions; never uninitialised
   if (n == 0) {
     T zero(0.0);

@@ -11,10 +11,77 @@
 namespace openmss::mechanics {
 namespace {
 
-bool functionReads(const model::BoundExpression& f) {
-  return std::any_of(f.measures.begin(), f.measures.end(), [](const model::Measure& ms) {
-    return model::readsAccelerationOrReaction(ms.kind);
+bool functionReads(const model::Model& m, const model::BoundExpression& f, bool reactionsOnly,
+                   int depth);
+
+// Whether marker i's FX..TM(i, j) takes a constraint reaction: a joint, joint primitive or
+// motion acting between them, or a GCON whose FUNCTION reads them (as
+// ForceElements::netForceTakes selects the equations).
+bool netForceReadsReactions(const model::Model& m, const model::Measure& ms) {
+  auto acts = [&](int a, int b) {
+    return (a == ms.i && (ms.j < 0 || b == ms.j)) || (b == ms.i && (ms.j < 0 || a == ms.j));
+  };
+  for (const model::Joint& j : m.joints)
+    if (acts(j.iMarker, j.jMarker)) return true;
+  for (const model::JPrim& j : m.jprims)
+    if (acts(j.iMarker, j.jMarker)) return true;
+  for (const model::Motion& j : m.motions)
+    if (acts(j.iMarker, j.jMarker)) return true;
+  return !m.gcons.empty();  // conservative: a GCON's markers are those its FUNCTION reads
+}
+
+// Whether a force element read back by `ms` (SFORCE, VFORCE, ..., FX..TM) has a function that
+// reads accelerations or reactions: the read-back then reads them too (force_read_back.hpp).
+bool readBackReads(const model::Model& m, const model::Measure& ms, bool reactionsOnly,
+                   int depth) {
+  using K = model::MeasureKind;
+  auto vector = [&](int k) {
+    for (const auto& c : m.vectorForces[k].components)
+      if (c && functionReads(m, *c, reactionsOnly, depth + 1)) return true;
+    return false;
+  };
+  switch (ms.kind) {
+    case K::SForceForce:
+      return functionReads(m, m.sforces[ms.element].function, reactionsOnly, depth + 1);
+    case K::VForceForce: case K::VTorqueForce: case K::GForceForce:
+      return vector(ms.element);
+    case K::NetForce: {
+      if (netForceReadsReactions(m, ms)) return true;
+      auto acts = [&](int a, int b) {
+        return (a == ms.i && (ms.j < 0 || b == ms.j)) || (b == ms.i && (ms.j < 0 || a == ms.j));
+      };
+      for (size_t k = 0; k < m.sforces.size(); ++k)
+        if (acts(m.sforces[k].iMarker, m.sforces[k].jMarker) &&
+            functionReads(m, m.sforces[k].function, reactionsOnly, depth + 1))
+          return true;
+      for (size_t k = 0; k < m.vectorForces.size(); ++k)
+        if (acts(m.vectorForces[k].iMarker, m.vectorForces[k].jFloat) &&
+            vector(static_cast<int>(k)))
+          return true;
+      return false;
+    }
+    default:
+      return false;
+  }
+}
+
+// True when f reads an acceleration (unless reactionsOnly) or a reaction, directly or through
+// the force elements it reads back. The model builder refuses read-back cycles; `depth` bounds
+// the chain all the same (a longer one is taken as reading them).
+bool functionReads(const model::Model& m, const model::BoundExpression& f, bool reactionsOnly,
+                   int depth) {
+  if (depth > static_cast<int>(m.sforces.size() + m.vectorForces.size()) + 1) return true;
+  using K = model::MeasureKind;
+  return std::any_of(f.measures.begin(), f.measures.end(), [&](const model::Measure& ms) {
+    const bool reaction =
+        ms.kind == K::JointForce || ms.kind == K::MotionForce || ms.kind == K::JPrimForce;
+    if (reaction || (!reactionsOnly && model::readsAccelerationOrReaction(ms.kind))) return true;
+    return readBackReads(m, ms, reactionsOnly, depth);
   });
+}
+
+bool functionReads(const model::Model& m, const model::BoundExpression& f) {
+  return functionReads(m, f, false, 0);
 }
 
 }  // namespace
@@ -35,26 +102,21 @@ void kinematicRates(const StateLayout& l, const Eigen::VectorXd& y, Eigen::Vecto
 bool readsAccelerationsOrReactions(const model::Model& m) {
   if (!m.frictions.empty()) return true;  // joint friction reads its joint's reaction
   for (const model::SForce& f : m.sforces)
-    if (functionReads(f.function)) return true;
+    if (functionReads(m, f.function)) return true;
   for (const model::VectorForce& f : m.vectorForces)
     for (const auto& c : f.components)
-      if (c && functionReads(*c)) return true;
+      if (c && functionReads(m, *c)) return true;
   for (const model::Variable& v : m.variables)
-    if (functionReads(v.function)) return true;
+    if (functionReads(m, v.function)) return true;
   for (const model::Diff& d : m.diffs)
-    if (functionReads(d.function)) return true;
+    if (functionReads(m, d.function)) return true;
   return false;
 }
 
 bool forceFunctionsReadReactions(const model::Model& m) {
   if (!m.frictions.empty()) return true;  // joint friction reads its joint's reaction
-  auto reads = [](const model::BoundExpression& f) {
-    return std::any_of(f.measures.begin(), f.measures.end(), [](const model::Measure& ms) {
-      return ms.kind == model::MeasureKind::JointForce ||
-             ms.kind == model::MeasureKind::MotionForce ||
-             ms.kind == model::MeasureKind::JPrimForce;
-    });
-  };
+  // Directly or through a read-back of a force that reads them, or FX..TM (theory.md §4d).
+  auto reads = [&m](const model::BoundExpression& f) { return functionReads(m, f, true, 0); };
   for (const model::SForce& f : m.sforces)
     if (reads(f.function)) return true;
   for (const model::VectorForce& f : m.vectorForces)

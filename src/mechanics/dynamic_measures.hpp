@@ -25,6 +25,12 @@ template <class T>
 struct DynamicReads {
   const T* yp = nullptr;
   const ConstraintSet* constraints = nullptr;
+  // Force read-backs (SFORCE(...), SPDP, BUSH, ..., FX..TM; docs/theory.md §4d): the applied
+  // force elements behind a type-erased pointer to their evaluator (force_read_back.hpp), so
+  // that this header, which the force elements include, need not know them. Null: read as 0.
+  const void* forces = nullptr;
+  bool (*forceReadBack)(const void* forces, const model::Measure& ms, double t, const T* y,
+                        const DynamicReads<T>* reads, T* out) = nullptr;
 };
 
 // True for the measure kinds dynamicMeasure evaluates (the model builder allows the same).
@@ -88,14 +94,12 @@ T virtualGeometryDerivative(const ConstraintEquation& eq, const Frame<T>* frames
 }
 
 // Force on the part of `marker` and torque about the marker's origin (ground axes) exerted by
-// the active equations of one joint, joint primitive or motion: -C^T lambda of those equations,
-// as MultibodySystem::elementReaction computes it for the outputs.
-template <class T>
-void constraintElementReaction(const model::Model& m, const StateLayout& l,
-                               const ConstraintSet& constraints, model::MeasureKind kind,
-                               int element, int marker, const T* y, V3<T>& force,
-                               V3<T>& torque) {
-  using K = model::MeasureKind;
+// the active equations that `take(eq)` selects: -C^T lambda of those equations, as
+// MultibodySystem::reactionOf computes it for the outputs.
+template <class T, class Pick>
+void constraintReactionOn(const model::Model& m, const StateLayout& l,
+                          const ConstraintSet& constraints, Pick&& take, int marker, const T* y,
+                          V3<T>& force, V3<T>& torque) {
   const V3<T> zero(T(0.0), T(0.0), T(0.0));
   force = zero;
   V3<T> bodyTorque = zero;
@@ -110,10 +114,7 @@ void constraintElementReaction(const model::Model& m, const StateLayout& l,
   const auto& eqs = constraints.equations();
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
     const ConstraintEquation& eq = eqs[k];
-    const bool mine = kind == K::JointForce    ? eq.joint == element
-                      : kind == K::MotionForce ? eq.motion == element
-                                               : eq.jprim == element;
-    if (!eq.active || !mine) continue;
+    if (!eq.active || !take(eq)) continue;
     const T& lambda = y[l.lambda(k)];
     Frame<T> frames[ConstraintEquation::kMaxMarkers];
     for (int s = 0; s < eq.markerCount(); ++s) {
@@ -131,6 +132,24 @@ void constraintElementReaction(const model::Model& m, const StateLayout& l,
   }
   const V3<T> pm = markerState(m, l, marker, y).p;
   torque = axes * bodyTorque - cross(pm - origin, force);
+}
+
+// The same for the active equations of one joint, joint primitive or motion, as
+// MultibodySystem::elementReaction computes it for the outputs.
+template <class T>
+void constraintElementReaction(const model::Model& m, const StateLayout& l,
+                               const ConstraintSet& constraints, model::MeasureKind kind,
+                               int element, int marker, const T* y, V3<T>& force,
+                               V3<T>& torque) {
+  using K = model::MeasureKind;
+  constraintReactionOn(
+      m, l, constraints,
+      [&](const ConstraintEquation& eq) {
+        return kind == K::JointForce    ? eq.joint == element
+               : kind == K::MotionForce ? eq.motion == element
+                                        : eq.jprim == element;
+      },
+      marker, y, force, torque);
 }
 
 // |a| with a zero derivative at a = 0 (a reaction that vanishes has no direction).

@@ -1,5 +1,7 @@
 #include "mechanics/force_elements.hpp"
 
+#include <algorithm>
+
 namespace openmss::mechanics {
 
 namespace {
@@ -25,6 +27,7 @@ ForceElements::ForceElements(const model::Model& model) : model_(&model) {
   add(ForceElementKind::LinearField, model.linearFields.size());
   add(ForceElementKind::VectorForce, model.vectorForces.size());
   add(ForceElementKind::Friction, model.frictions.size());
+  add(ForceElementKind::MultiPoint, model.nforces.size());
   for (const model::SpringDamper& s : model.springDampers) {
     double reference = 0.0;
     if (s.rotational) {
@@ -43,6 +46,7 @@ int ForceElements::iMarker(ForceElementRef e) const {
     case ForceElementKind::LinearField: return model_->linearFields[e.index].iMarker;
     case ForceElementKind::VectorForce: return model_->vectorForces[e.index].iMarker;
     case ForceElementKind::Friction: return model_->joints[model_->frictions[e.index].joint].iMarker;
+    case ForceElementKind::MultiPoint: return -1;
   }
   return -1;
 }
@@ -54,6 +58,7 @@ int ForceElements::jMarker(ForceElementRef e) const {
     case ForceElementKind::LinearField: return model_->linearFields[e.index].jMarker;
     case ForceElementKind::VectorForce: return model_->vectorForces[e.index].jFloat;
     case ForceElementKind::Friction: return model_->joints[model_->frictions[e.index].joint].jMarker;
+    case ForceElementKind::MultiPoint: return model_->nforces[e.index].jMarker;
   }
   return -1;
 }
@@ -61,24 +66,53 @@ int ForceElements::jMarker(ForceElementRef e) const {
 void ForceElements::action(ForceElementRef e, bool atJ, double t, const double* y,
                            Eigen::Vector3d& force, Eigen::Vector3d& torque,
                            const DynamicReads<double>* reads) const {
-  const ElementLoads<double> l = loads(e, t, y, reads);
-  force.setZero();
-  torque.setZero();
-  if (!atJ) {
-    if (l.hasForce) force = toEigen(l.force);
-    if (l.hasTorque) torque = toEigen(l.torque);
-    return;
+  V3<double> f, tq;
+  actionOn(e, atJ, t, y, reads, f, tq);
+  force = toEigen(f);
+  torque = toEigen(tq);
+}
+
+namespace {
+
+// True when GCON g's FUNCTION reads `marker` (as i, j or k of a measure).
+bool gconReads(const model::GeneralConstraint& g, int marker) {
+  for (const model::Measure& m : g.function.measures)
+    if (m.i == marker || m.j == marker || m.k == marker) return true;
+  return false;
+}
+
+}  // namespace
+
+bool ForceElements::netForceTakes(const ConstraintEquation& eq, int marker, int other) const {
+  const model::Model& m = *model_;
+  auto acts = [&](int a, int b) {
+    return (a == marker && (other < 0 || b == other)) || (b == marker && (other < 0 || a == other));
+  };
+  if (eq.coupler >= 0 || eq.gear >= 0) return false;
+  if (eq.joint >= 0) return acts(m.joints[eq.joint].iMarker, m.joints[eq.joint].jMarker);
+  if (eq.jprim >= 0) return acts(m.jprims[eq.jprim].iMarker, m.jprims[eq.jprim].jMarker);
+  if (eq.motion >= 0) return acts(m.motions[eq.motion].iMarker, m.motions[eq.motion].jMarker);
+  if (eq.gcon >= 0)
+    return gconReads(m.gcons[eq.gcon], marker) &&
+           (other < 0 || gconReads(m.gcons[eq.gcon], other));
+  return false;
+}
+
+bool ForceElements::netForceActs(ForceElementRef e, int marker, int other, bool* atJ) const {
+  if (e.kind == ForceElementKind::MultiPoint) {
+    // On J (between J and any of its I markers) or on an I marker (between it and J).
+    const model::MultiPointForce& f = model_->nforces[e.index];
+    *atJ = marker == f.jMarker;
+    const bool isI = std::find(f.iMarkers.begin(), f.iMarkers.end(), marker) != f.iMarkers.end();
+    if (*atJ)
+      return other < 0 || std::find(f.iMarkers.begin(), f.iMarkers.end(), other) != f.iMarkers.end();
+    return isI && (other < 0 || other == f.jMarker);
   }
-  if (l.reactionMarker < 0) return;
-  const model::Marker& mk = model_->markers[l.reactionMarker];
-  // A floating marker sits at the point where the reaction acts.
-  const V3<double> origin =
-      mk.floating ? l.reactionPoint : markerState(*model_, layout_, l.reactionMarker, y).p;
-  if (l.hasForce) {
-    force = toEigen(l.reactionForce);
-    torque = toEigen(cross(l.reactionPoint - origin, l.reactionForce));
-  }
-  if (l.hasTorque) torque += toEigen(l.reactionTorque);
+  const int i = iMarker(e), j = jMarker(e);
+  const bool onI = i == marker && (other < 0 || j == other);
+  const bool onJ = j == marker && (other < 0 || i == other);
+  *atJ = !onI;
+  return onI || onJ;
 }
 
 }  // namespace openmss::mechanics

@@ -22,8 +22,9 @@
 namespace openmss::mechanics {
 
 // Friction: FRICTION on a joint (mechanics/friction/joint_friction.hpp), acting between the
-// joint's I and J markers.
-enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Friction };
+// joint's I and J markers. MultiPoint: NFORCE, which loads every one of its I markers and J
+// (multiPointLoads); loads() is empty for it.
+enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Friction, MultiPoint };
 
 // One element: its kind and its index in the Model's vector of that kind.
 struct ForceElementRef {
@@ -66,17 +67,50 @@ class ForceElements {
   void action(ForceElementRef e, bool atJ, double t, const double* y, Eigen::Vector3d& force,
               Eigen::Vector3d& torque, const DynamicReads<double>* reads = nullptr) const;
 
+  // NFORCE k (docs/theory.md §6b): the force and torque (ground) on the part of each I marker,
+  // through that marker's origin, and the reaction on J's part, torque about J's origin.
+  template <class T>
+  void multiPointLoads(int k, const T* y, std::vector<V3<T>>& force, std::vector<V3<T>>& torque,
+                       V3<T>& jForce, V3<T>& jTorque) const;
+  // NFORCE k's force on `marker` (an I marker or J; zero for another), torque about its origin.
+  template <class T>
+  void multiPointAction(int k, int marker, const T* y, V3<T>& force, V3<T>& torque) const;
+
   // The element's I marker and its J marker as the data set names it (JFLOAT for VFORCE,
-  // VTORQUE, GFORCE; the J of an action-only SFORCE, which takes no reaction).
+  // VTORQUE, GFORCE; the J of an action-only SFORCE, which takes no reaction). NFORCE: -1 and
+  // its J (its I markers are Model::nforces[k].iMarkers).
   int iMarker(ForceElementRef e) const;
   int jMarker(ForceElementRef e) const;
 
   // Value of SFORCE k's function (exposed for diagnostics).
   template <class T>
   T sforceValue(int k, double t, const T* y, const DynamicReads<T>* reads = nullptr) const {
+    const DynamicReads<T> r = readsWith(reads);
     return evaluateFunction(*model_, layout_, model_->sforces[k].function, t, y,
-                            scratchValues_, scratchGrad_, reads, run_);
+                            scratchValues_, scratchGrad_, &r, run_);
   }
+
+  // Force read-backs in functions (force_read_back.hpp, docs/theory.md §4d). `reads` with
+  // these elements as its force evaluator (every function evaluation that may read a force
+  // goes through it).
+  template <class T>
+  DynamicReads<T> readsWith(const DynamicReads<T>* reads) const;
+  // SFORCE, SPDP, BUSH, FIELD, BEAM, VFORCE, VTORQ, GFORCE (id, jflag, comp, rm) and FX..TM:
+  // the value on T; false for any other measure kind.
+  template <class T>
+  bool readBack(const model::Measure& ms, double t, const T* y, const DynamicReads<T>* reads,
+                T* out) const;
+  // `action` on any scalar.
+  template <class T>
+  void actionOn(ForceElementRef e, bool atJ, double t, const T* y, const DynamicReads<T>* reads,
+                V3<T>& force, V3<T>& torque) const;
+  // FX..TM(i, j): whether constraint equation eq acts between marker i and j (any marker when
+  // j < 0), as the request output selects them: joints, joint primitives and motions by their
+  // I and J markers, GCONs whose FUNCTION reads the markers; couplers and gears never.
+  bool netForceTakes(const ConstraintEquation& eq, int marker, int other) const;
+  // Whether force element e acts on `marker` (between it and `other` when other >= 0), and at
+  // which of its ends (*atJ).
+  bool netForceActs(ForceElementRef e, int marker, int other, bool* atJ) const;
 
   // The relative rotation about zJ of a rotational SPRINGDAMPER's markers, unwrapped about the
   // value at the data set's configuration: in (ref - pi, ref + pi].
@@ -104,6 +138,10 @@ class ForceElements {
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
                    bool hasForce, bool hasTorque, const T* y, T* g) const;
+
+  template <class T>
+  static bool readBackThunk(const void* forces, const model::Measure& ms, double t, const T* y,
+                            const DynamicReads<T>* reads, T* out);
 
   const model::Model* model_;
   StateLayout layout_;  // own copy (only body offsets are read): the owner may be moved
@@ -245,10 +283,11 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
   const model::VectorForce& f = model_->vectorForces[k];
   const MarkerState<T> mi = markerState(*model_, layout_, f.iMarker, y);
   const M3<T> rm = markerState(*model_, layout_, f.rmMarker, y).a;
+  const DynamicReads<T> r = readsWith(reads);
   T c[6];
   for (int n = 0; n < 6; ++n)
     c[n] = f.components[n] ? evaluateFunction(*model_, layout_, *f.components[n], t, y,
-                                              scratchValues_, scratchGrad_, reads, run_)
+                                              scratchValues_, scratchGrad_, &r, run_)
                            : T(0.0);
   ElementLoads<T> l;
   l.hasForce = f.kind != model::VectorForce::Kind::VTorque;
@@ -272,6 +311,7 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
     case ForceElementKind::LinearField: return linearFieldLoads(e.index, y);
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
     case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
+    case ForceElementKind::MultiPoint: return {};  // multiPointLoads
   }
   return {};
 }
@@ -293,6 +333,63 @@ ElementLoads<T> ForceElements::frictionLoads(int k, const T* y,
   l.reactionForce = -l.force;
   l.reactionTorque = -l.torque;
   return l;
+}
+
+template <class T>
+void ForceElements::multiPointLoads(int k, const T* y, std::vector<V3<T>>& force,
+                                    std::vector<V3<T>>& torque, V3<T>& jForce,
+                                    V3<T>& jTorque) const {
+  const model::MultiPointForce& f = model_->nforces[k];
+  const int n = static_cast<int>(f.iMarkers.size());
+  const MarkerState<T> mj = markerState(*model_, layout_, f.jMarker, y);
+  std::vector<T> q(static_cast<size_t>(6 * n)), qdot(static_cast<size_t>(6 * n));
+  std::vector<V3<T>> points(static_cast<size_t>(n));
+  for (int i = 0; i < n; ++i) {
+    const MarkerState<T> mi = markerState(*model_, layout_, f.iMarkers[i], y);
+    fieldDisplacement(mi, mj, &q[6 * i], &qdot[6 * i]);
+    points[i] = mi.p;
+  }
+  force.resize(static_cast<size_t>(n));
+  torque.resize(static_cast<size_t>(n));
+  jForce = V3<T>(T(0.0), T(0.0), T(0.0));
+  jTorque = jForce;
+  for (int i = 0; i < n; ++i) {
+    T load[6];
+    for (int r = 0; r < 6; ++r) {
+      const int row = 6 * i + r;
+      T sum = T(f.preload(row));
+      for (int c = 0; c < 6 * n; ++c) {
+        if (f.stiffness(row, c) != 0.0) sum = sum - f.stiffness(row, c) * (q[c] - f.length(c));
+        if (f.damping(row, c) != 0.0) sum = sum - f.damping(row, c) * qdot[c];
+      }
+      load[r] = sum;
+    }
+    force[i] = mj.a * V3<T>(load[0], load[1], load[2]);
+    torque[i] = mj.a * V3<T>(load[3], load[4], load[5]);
+    // J balances every I load: equal and opposite forces, and their moments about J.
+    jForce = jForce - force[i];
+    jTorque = jTorque - torque[i] - cross(points[i] - mj.p, force[i]);
+  }
+}
+
+template <class T>
+void ForceElements::multiPointAction(int k, int marker, const T* y, V3<T>& force,
+                                     V3<T>& torque) const {
+  std::vector<V3<T>> f, tq;
+  V3<T> fj, tj;
+  multiPointLoads(k, y, f, tq, fj, tj);
+  const model::MultiPointForce& nf = model_->nforces[k];
+  force = V3<T>(T(0.0), T(0.0), T(0.0));
+  torque = force;
+  if (marker == nf.jMarker) {
+    force = fj;
+    torque = tj;
+  }
+  for (size_t i = 0; i < nf.iMarkers.size(); ++i)
+    if (nf.iMarkers[i] == marker) {
+      force = force + f[i];
+      torque = torque + tq[i];
+    }
 }
 
 template <class T>
@@ -322,6 +419,18 @@ template <class T>
 void ForceElements::addToResidual(double t, const T* y, T* g,
                                   const DynamicReads<T>* reads) const {
   for (const ForceElementRef& e : elements_) {
+    if (e.kind == ForceElementKind::MultiPoint) {
+      std::vector<V3<T>> f, tq;
+      V3<T> fj, tj;
+      multiPointLoads(e.index, y, f, tq, fj, tj);
+      const model::MultiPointForce& nf = model_->nforces[e.index];
+      for (size_t i = 0; i < nf.iMarkers.size(); ++i)
+        applyToBody(nf.iMarkers[i], markerState(*model_, layout_, nf.iMarkers[i], y).p, f[i],
+                    tq[i], true, true, y, g);
+      applyToBody(nf.jMarker, markerState(*model_, layout_, nf.jMarker, y).p, fj, tj, true, true,
+                  y, g);
+      continue;
+    }
     const ElementLoads<T> l = loads(e, t, y, reads);
     const int im = iMarker(e);
     const MarkerState<T> mi = markerState(*model_, layout_, im, y);
@@ -333,3 +442,5 @@ void ForceElements::addToResidual(double t, const T* y, T* g,
 }
 
 }  // namespace openmss::mechanics
+
+#include "mechanics/force_read_back.hpp"  // IWYU pragma: export

@@ -145,11 +145,84 @@ class PatternBuilder {
       case K::JointForce: case K::MotionForce: case K::JPrimForce:
         addReaction(d, ms);
         return;
+      // Force read-backs (force_read_back.hpp): what the element's loads read, and the
+      // resolution marker.
+      case K::SForceForce: case K::SpringDamperForce: case K::BushingForce:
+      case K::FieldForce: case K::BeamForce: case K::VForceForce: case K::VTorqueForce:
+      case K::GForceForce:
+        addElementReads(d, *forceElementOfMeasure(ms.kind, ms.element));
+        addMarkerKinematics(d, ms.k);
+        return;
+      case K::NForceForce:
+        addElementReads(d, {ForceElementKind::MultiPoint, ms.element});
+        addMarkerKinematics(d, ms.k);
+        return;
+      case K::NetForce:
+        addNetForce(d, ms);
+        return;
       default:
-        // Force read-backs and any kind added later: not resolved here.
+        // Any kind added later: not resolved here.
         d.all = true;
         return;
     }
+  }
+  // What force element e's loads read: the bodies of its markers and whatever its functions
+  // read (read-backs of other elements included; the model builder refuses cycles, and a
+  // chain longer than the element count is treated as unresolved all the same).
+  void addElementReads(Dependencies& d, ForceElementRef e) const {
+    const ForceElements& fe = s_.forceElements();
+    if (++depth_ > static_cast<int>(fe.elements().size()) + 1) {
+      d.all = true;
+      --depth_;
+      return;
+    }
+    addMarkerKinematics(d, fe.iMarker(e));
+    addMarkerKinematics(d, fe.jMarker(e));
+    switch (e.kind) {
+      case ForceElementKind::SForce:
+        addFunction(d, m_.sforces[e.index].function);
+        break;
+      case ForceElementKind::SpringDamper:
+      case ForceElementKind::LinearField:
+        break;
+      case ForceElementKind::VectorForce: {
+        const model::VectorForce& v = m_.vectorForces[e.index];
+        addMarkerKinematics(d, v.rmMarker);
+        for (const auto& component : v.components)
+          if (component) addFunction(d, *component);
+        break;
+      }
+      case ForceElementKind::Friction: {
+        // The joint's reaction: its multipliers and the poses its equations read.
+        model::Measure reaction;
+        reaction.kind = model::MeasureKind::JointForce;
+        reaction.element = m_.frictions[e.index].joint;
+        addReaction(d, reaction);
+        break;
+      }
+      case ForceElementKind::MultiPoint:
+        for (int marker : m_.nforces[e.index].iMarkers) addMarkerKinematics(d, marker);
+        break;
+    }
+    --depth_;
+  }
+  // FX..TM(i [,j] [,k]): the multipliers and marker poses of the constraint equations acting
+  // on i (ForceElements::netForceTakes), the reads of the force elements acting on it, and the
+  // bodies of i and k.
+  void addNetForce(Dependencies& d, const model::Measure& ms) const {
+    const ForceElements& fe = s_.forceElements();
+    const auto& eqs = s_.constraints().equations();
+    for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
+      if (!fe.netForceTakes(eqs[k], ms.i, ms.j)) continue;
+      d.columns.push_back(l_.lambda(k));
+      for (int s = 0; s < eqs[k].markerCount(); ++s) addPose(d, bodyOfMarker(eqs[k].marker(s)));
+    }
+    for (const ForceElementRef& e : fe.elements()) {
+      bool atJ = false;
+      if (fe.netForceActs(e, ms.i, ms.j, &atJ)) addElementReads(d, e);
+    }
+    addMarkerKinematics(d, ms.i);
+    addMarkerKinematics(d, ms.k);
   }
   // JOINT, JPRIM, MOTION reactions: -C^T lambda of the element's equations on one marker's
   // part, resolved in the k axes: their multipliers, the poses of every body those equations
@@ -218,34 +291,9 @@ class PatternBuilder {
     for (const ForceElementRef& e : fe.elements()) {
       Dependencies d;
       const int i = fe.iMarker(e), j = fe.jMarker(e);
-      addMarkerKinematics(d, i);
-      addMarkerKinematics(d, j);
-      switch (e.kind) {
-        case ForceElementKind::SForce:
-          addFunction(d, m_.sforces[e.index].function);
-          break;
-        case ForceElementKind::SpringDamper:
-        case ForceElementKind::LinearField:
-          break;
-        case ForceElementKind::VectorForce: {
-          const model::VectorForce& v = m_.vectorForces[e.index];
-          addMarkerKinematics(d, v.rmMarker);
-          for (const auto& component : v.components)
-            if (component) addFunction(d, *component);
-          break;
-        }
-        case ForceElementKind::Friction: {
-          // The joint's reaction: its multipliers and the poses its equations read.
-          model::Measure reaction;
-          reaction.kind = model::MeasureKind::JointForce;
-          reaction.element = m_.frictions[e.index].joint;
-          addReaction(d, reaction);
-          break;
-        }
-        default:
-          d.all = true;
-          break;
-      }
+      addElementReads(d, e);
+      if (e.kind == ForceElementKind::MultiPoint)  // NFORCE loads every I marker's body
+        for (int marker : m_.nforces[e.index].iMarkers) addForceRows(bodyOfMarker(marker), d);
       addForceRows(bodyOfMarker(i), d);
       addForceRows(bodyOfMarker(j), d);
     }
@@ -321,6 +369,7 @@ class PatternBuilder {
   }
 
   bool forceAndUserOnly_;
+  mutable int depth_ = 0;  // nesting of addElementReads (read-backs of read-backs)
   const MultibodySystem& s_;
   const model::Model& m_;
   const StateLayout& l_;

@@ -132,9 +132,10 @@ class MultibodySystem {
   template <class T>
   void forceAndUserResidual(double t, const T* y, const T* yp, T* g) const {
     // As residual(): functions may read accelerations and reactions (dynamic_measures.hpp).
-    const DynamicReads<T> reads{yp, &constraints_};
+    const DynamicReads<T> base{yp, &constraints_};
+    const DynamicReads<T> reads = forces_.readsWith(&base);  // and force read-backs (§4d)
     forces_.addToResidual(t, y, g, &reads);
-    user_.addToResidual(t, y, yp, g, &constraints_);
+    user_.addToResidual(t, y, yp, g, &reads);
   }
   // True for the equation kinds whose constraint force has an analytic gradient here (Point,
   // Dot, Along, MotionTranslation); the others differentiate their geometry per direction.
@@ -413,9 +414,10 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
     r[StateLayout::kMu] = e0 * e0 + e1 * e1 + e2 * e2 + e3 * e3 - 1.0;
   }
   // Functions may read accelerations (y') and reactions (multipliers): dynamic_measures.hpp.
-  const DynamicReads<T> reads{yp, &constraints_};
+  const DynamicReads<T> base{yp, &constraints_};
+  const DynamicReads<T> reads = forces_.readsWith(&base);  // and force read-backs (§4d)
   forces_.addToResidual(t, y, g, &reads);
-  user_.addToResidual(t, y, yp, g, &constraints_);
+  user_.addToResidual(t, y, yp, g, &reads);
   const auto& eqs = constraints_.equations();
   KinematicsScratch<T>& kin = beginKinematics<T>();
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {

@@ -31,10 +31,11 @@ class UserEquations {
   }
   const GeneralStateRows& generalStates() const { return gse_; }
 
-  // `constraints` lets functions read reactions (JOINT, MOTION, JPRIM); y' gives accelerations.
+  // `reads` lets functions read reactions (JOINT, MOTION, JPRIM) and applied forces (SFORCE,
+  // BUSH, ..., FX..TM; its force evaluator); y' gives accelerations. Null: y' and nothing else.
   template <class T>
   void addToResidual(double t, const T* y, const T* yp, T* g,
-                     const ConstraintSet* constraints = nullptr) const;
+                     const DynamicReads<T>* reads = nullptr) const;
 
   // User differential states (index among them) that STATIC_HOLD keeps fixed in statics.
   std::vector<bool> staticHold() const;
@@ -59,10 +60,11 @@ class UserEquations {
 
 template <class T>
 void UserEquations::addToResidual(double t, const T* y, const T* yp, T* g,
-                                  const ConstraintSet* constraints) const {
+                                  const DynamicReads<T>* dynamicReads) const {
   const model::Model& m = *model_;
   const StateLayout& l = layout_;
-  const DynamicReads<T> reads{yp, constraints};
+  DynamicReads<T> reads = dynamicReads != nullptr ? *dynamicReads : DynamicReads<T>{};
+  reads.yp = yp;
   const int nv = static_cast<int>(m.variables.size());
   for (int k = 0; k < nv; ++k) {
     const T f = evaluateFunction(m, l, m.variables[k].function, t, y, scratchValues_,

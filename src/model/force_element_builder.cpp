@@ -317,7 +317,7 @@ void buildVectorForce(const Statement& s, Model& model, Diagnostics& diags) {
 
 bool isForceElementStatement(const std::string& name) {
   return name == "SPRINGDAMPER" || name == "BUSHING" || name == "FIELD" || name == "BEAM" ||
-         name == "VFORCE" || name == "VTORQUE" || name == "GFORCE";
+         name == "VFORCE" || name == "VTORQUE" || name == "GFORCE" || name == "NFORCE";
 }
 
 void buildForceElements(const std::vector<const Statement*>& statements, Model& model,
@@ -332,6 +332,8 @@ void buildForceElements(const std::vector<const Statement*>& statements, Model& 
       buildField(*s, model, diags);
     else if (s->name == "BEAM")
       buildBeam(*s, model, diags);
+    else if (s->name == "NFORCE")
+      buildNForce(*s, model, diags);  // nforce_builder.cpp
     else
       buildVectorForce(*s, model, diags);
   }

@@ -18,6 +18,8 @@ bool isForceElementStatement(const std::string& name);
 // element to exist first: bindForceElementFunctions).
 void buildForceElements(const std::vector<const language::Statement*>& statements, Model& model,
                         Diagnostics& diags);
+// NFORCE (nforce_builder.cpp): its markers and MATRIX data, checked for size.
+void buildNForce(const language::Statement& s, Model& model, Diagnostics& diags);
 // Binds the FX= ... TZ= expressions of VFORCE, VTORQUE and GFORCE.
 void bindForceElementFunctions(const std::vector<const language::Statement*>& statements,
                                Model& model, Diagnostics& diags);

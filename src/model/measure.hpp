@@ -31,6 +31,9 @@ enum class MeasureKind {
   // FRICTION(id, comp): `element` indexes Model::frictions, `component` 1..22 (ADAMS's
   // FFX..FTZ, coefficients, slip velocities, creep; mechanics/friction/friction_output.hpp).
   FrictionOutput,
+  // NFORCE(id, marker, comp, rm): `element` indexes Model::nforces, `i` the marker (one of
+  // its I markers or its J) whose force is read.
+  NForceForce,
   // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
   // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
   VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
@@ -78,7 +81,7 @@ struct Measure {
       case MeasureKind::SpringDamperForce: case MeasureKind::BushingForce:
       case MeasureKind::FieldForce: case MeasureKind::BeamForce:
       case MeasureKind::VForceForce: case MeasureKind::VTorqueForce:
-      case MeasureKind::GForceForce:
+      case MeasureKind::GForceForce: case MeasureKind::NForceForce:
       case MeasureKind::FrictionOutput:
       case MeasureKind::NetForce:
         return true;

@@ -228,6 +228,19 @@ struct Friction {
   SourceLocation where;
 };
 
+// NFORCE (docs/theory.md §6b): a linear force among n I markers and J. Per I marker k the
+// displacement q_k = (x, y, z, a, b, c) of I_k relative to J in J axes (as FIELD) and its rate
+// give {F; T}_k = -K (q - LENGTH) - C q' + FORCE (6n rows, K and C 6n x 6n) on I_k in J axes;
+// J takes the reaction that keeps the element in equilibrium.
+struct MultiPointForce {
+  long id = 0;
+  std::vector<int> iMarkers;
+  int jMarker = -1;
+  Eigen::MatrixXd stiffness, damping;  // 6n x 6n
+  Eigen::VectorXd length, preload;     // 6n
+  SourceLocation where;
+};
+
 // ---- User equations (docs/theory.md §4a; model/user_equation_builder.cpp) ----
 
 // VARIABLE: an algebraic unknown v with v = FUNCTION(...), read with VARVAL(id).
@@ -396,6 +409,7 @@ struct Model {
   std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM
   std::vector<VectorForce> vectorForces;  // VFORCE, VTORQUE, GFORCE
   std::vector<Friction> frictions;        // FRICTION (joint friction)
+  std::vector<MultiPointForce> nforces;   // NFORCE
   // User equations: VARIABLE, DIFF, ARRAY, LSE/TFSISO, PINPUT, POUTPUT.
   std::vector<Variable> variables;
   std::vector<Diff> diffs;

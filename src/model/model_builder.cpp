@@ -1,5 +1,6 @@
 #include "model/model_builder.hpp"
 
+#include <algorithm>
 #include <map>
 #include <set>
 
@@ -7,6 +8,7 @@
 #include "model/data_element_builder.hpp"
 #include "model/force_element_builder.hpp"
 #include "model/friction_builder.hpp"
+#include "model/force_read_back_check.hpp"
 #include "model/general_constraint_builder.hpp"
 #include "model/joint_builder.hpp"
 #include "model/material_builder.hpp"
@@ -34,7 +36,7 @@ const std::set<std::string>& supportedStatements() {
                                           "EQUILIBRIUM", "IC", "KINEMATICS", "JPRIM",
                                           // force elements (force_element_builder.cpp)
                                           "SPRINGDAMPER", "BUSHING", "FIELD", "BEAM",
-                                          "VFORCE", "VTORQUE", "GFORCE",
+                                          "VFORCE", "VTORQUE", "GFORCE", "NFORCE",
                                           // joint couplings (coupling_builder.cpp)
                                           "COUPLER", "GEAR",
                                           // general constraints (general_constraint_builder)
@@ -260,7 +262,7 @@ void applyDebugArguments(const Statement& s, DebugSettings& debug, Diagnostics& 
 }
 
 bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
-                    const std::string& subject, bool forForces, Diagnostics& diags,
+                    const std::string& subject, bool /*forForces*/, Diagnostics& diags,
                     BoundExpression& out, bool forConstraint, bool forRequest) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
   if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
@@ -369,8 +371,29 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
       // FRICTION(id, index) (friction_builder.cpp)
     } else if (bindAnalysisVariable(call.name, forRequest, m, fail)) {
       // MODE, HSIZE, ORDER, NJAC, NRHS; CPU refused (model/analysis_status.hpp)
-    } else if (call.name == "NFORCE" || call.name == "PTCV" || call.name == "CVCV" ||
-               call.name == "CONTACT") {
+    } else if (call.name == "NFORCE") {
+      // NFORCE(id, marker, comp, rm): the force on one of its markers (an I marker or J).
+      m.kind = MeasureKind::NForceForce;
+      const long eid = call.args.empty() ? 0 : call.args[0];
+      for (size_t q = 0; q < model.nforces.size(); ++q)
+        if (model.nforces[q].id == eid) m.element = static_cast<int>(q);
+      m.i = marker(1, false);
+      m.component = call.args.size() > 2 ? static_cast<int>(call.args[2]) : 0;
+      m.k = marker(3, true);
+      if (m.element < 0) {
+        fail("NFORCE/" + std::to_string(eid) + " does not exist",
+             "Use the id of a NFORCE statement of this data set.");
+      } else if (m.i >= 0) {
+        const MultiPointForce& nf = model.nforces[m.element];
+        if (m.i != nf.jMarker &&
+            std::find(nf.iMarkers.begin(), nf.iMarkers.end(), m.i) == nf.iMarkers.end())
+          fail("marker " + std::to_string(call.args[1]) + " is not a marker of NFORCE/" +
+                   std::to_string(eid),
+               "Give one of its IMARKERS or its J marker.");
+      }
+      if (m.component < 1 || m.component > 8)
+        fail("the component must be 1 to 8", "1 |F|, 2-4 Fx Fy Fz, 5 |T|, 6-8 Tx Ty Tz.");
+    } else if (call.name == "PTCV" || call.name == "CVCV" || call.name == "CONTACT") {
       // Read-backs of elements the solver rejects at input (expr4): name the missing element.
       const long eid = call.args.empty() ? 0 : call.args[0];
       fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
@@ -384,13 +407,9 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
            "Remove it or replace it by a supported function; see README.md for the list.");
       continue;
     }
-    // Accelerations, JOINT/JPRIM/MOTION reactions and ORIENT are read in force and VARIABLE
-    // functions (docs/theory.md §4b); read-backs of force elements and FX..TM not yet.
-    if (forForces && m.needsDynamics() && !readsAccelerationOrReaction(m.kind))
-      fail("force read-backs (SFORCE, SPDP, BUSH, FIELD, BEAM, VFORCE, VTORQ, GFORCE, FX..TM) "
-           "are not supported yet in force, VARIABLE or DIFF functions",
-           "Use it in a REQUEST; JOINT, JPRIM and MOTION reactions and accelerations are "
-           "supported here.");
+    // Accelerations, reactions, ORIENT and force read-backs are read in force, VARIABLE and
+    // DIFF functions (docs/theory.md §4b, §4d); cycles of read-backs are refused once every
+    // function is bound (force_read_back_check.hpp).
     // The run records DELAY arguments at accepted states from the measures force functions
     // can read (expression_run_state.cpp), so an expression with DELAY may not read forces.
     if (out.expression.delayCount() > 0 && m.needsDynamics() &&
@@ -434,6 +453,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   // Functions, once every element they may read exists (a force may read another's force).
   bindSForceFunctions(groups.sforces, model, diags);
   bindForceElementFunctions(groups.forceElements, model, diags);
+  checkForceReadBackCycles(model, diags);  // a force reading its own force (§4d)
   bindUserEquationFunctions(groups.userEquations, model, diags);
   bindSensorFunctions(dataset, model, diags);
   buildRequests(groups.requests, model, diags);  // last: a request may read every element

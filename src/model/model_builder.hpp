@@ -14,8 +14,9 @@ namespace openmss::model {
 bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& diags);
 
 // Binds the host calls of a parsed expression to model measures. Adds diagnostics for unknown
-// ids or functions the solver does not evaluate yet. `forForces` rejects measures that need
-// accelerations or reaction forces (they are allowed in requests only).
+// ids or functions the solver does not evaluate yet. `forForces` (a force, VARIABLE or DIFF
+// function) restricts nothing any more: accelerations, reactions and force read-backs are read
+// there too (docs/theory.md §4b, §4d); the callers still say what they bind.
 bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
                     const std::string& subject, bool forForces, Diagnostics& diags,
                     BoundExpression& out, bool forConstraint = false,

@@ -77,12 +77,12 @@ TEST(Check, NamesAStatementTheSolverDoesNotSupportYet) {
         "MARKER/10, PART=1\n"
         "PART/2, MASS=1, CM=20, IP=1,1,1\n"
         "MARKER/20, PART=2\n"
-        "NFORCE/5, IMARKERS=20, J=10, KMATRIX=1\n"
+        "MFORCE/5, FLEX_BODY=1, JFLOAT=10\n"
         "END\n");
   const Result r = run("check u.adm", dir);
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("u.adm:6"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("NFORCE/5: NFORCE is not supported yet"), std::string::npos)
+  EXPECT_NE(r.output.find("MFORCE/5: MFORCE is not supported yet"), std::string::npos)
       << r.output;
   fs::remove_all(dir);
 }

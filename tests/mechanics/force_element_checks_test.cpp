@@ -93,10 +93,8 @@ TEST(ForceElementChecks, ACorrectDataSetBuildsWithoutDiagnostics) {
       "VFORCE/1, I=20, JFLOAT=12, RM=10, FX=1\\FZ=-DZ(20,10)\n"
       "GFORCE/1, I=21, JFLOAT=12, RM=20, TZ=SPDP(1,0,4,0)\n"
       "REQUEST/1, F2=BUSH(1,0,2,0)\\F3=BEAM(1,1,6,10)\\F4=GFORCE(1,0,8,0)\\F5=VFORCE(1,0,1,0)\n");
-  // GFORCE/1 reads a force element in its function: rejected like SFORCE read-backs are.
-  expectHas(all, "GFORCE/1: SPDP: force read-backs (SFORCE, SPDP, BUSH, FIELD, BEAM, VFORCE, "
-                 "VTORQ, GFORCE, FX..TM) are not supported yet in force, VARIABLE or DIFF "
-                 "functions");
+  // GFORCE/1 reads a force element in its function (docs/theory.md §4d): accepted.
+  EXPECT_EQ(all.find("GFORCE/1"), std::string::npos) << all;
   EXPECT_EQ(all.find("REQUEST/1"), std::string::npos) << all;
   EXPECT_EQ(all.find("SPRINGDAMPER"), std::string::npos) << all;
   EXPECT_EQ(all.find("BEAM/1"), std::string::npos) << all;

@@ -73,12 +73,7 @@ TEST(SForceBuilder, WrongForcesAreLocated) {
           "statement, or openmss run --user-library LIB); docs/user-subroutines.md says how to "
           "build one.",
           "f.adm:11:45: error: SFORCE/4: SFORCE: SFORCE/7 does not exist. Use the id of a "
-          "SFORCE statement of this data set.",
-          // and, independently, a force may not read a force element yet
-          "f.adm:11:45: error: SFORCE/4: SFORCE: force read-backs (SFORCE, SPDP, BUSH, FIELD, "
-          "BEAM, VFORCE, VTORQ, GFORCE, FX..TM) are not supported yet in force, VARIABLE or "
-          "DIFF functions. Use it in a REQUEST; JOINT, JPRIM and MOTION reactions and "
-          "accelerations are supported here."}));
+          "SFORCE statement of this data set."}));
 }
 
 TEST(RequestBuilder, KindsMarkersAndColumns) {
