@@ -27,6 +27,8 @@ std::string forceElementName(const model::Model& m, const mechanics::ForceElemen
                                                                       : "VFORCE";
       return std::string(name) + "/" + std::to_string(f.id);
     }
+    case K::Contact:
+      return "CONTACT/" + std::to_string(m.contacts[e.index].id);
   }
   return "?";
 }

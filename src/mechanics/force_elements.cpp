@@ -24,6 +24,7 @@ ForceElements::ForceElements(const model::Model& model) : model_(&model) {
   add(ForceElementKind::SpringDamper, model.springDampers.size());
   add(ForceElementKind::LinearField, model.linearFields.size());
   add(ForceElementKind::VectorForce, model.vectorForces.size());
+  add(ForceElementKind::Contact, model.contacts.size());
   for (const model::SpringDamper& s : model.springDampers) {
     double reference = 0.0;
     if (s.rotational) {
@@ -41,6 +42,7 @@ int ForceElements::iMarker(ForceElementRef e) const {
     case ForceElementKind::SpringDamper: return model_->springDampers[e.index].iMarker;
     case ForceElementKind::LinearField: return model_->linearFields[e.index].iMarker;
     case ForceElementKind::VectorForce: return model_->vectorForces[e.index].iMarker;
+    case ForceElementKind::Contact: return model_->contacts[e.index].iMarker;
   }
   return -1;
 }
@@ -51,6 +53,7 @@ int ForceElements::jMarker(ForceElementRef e) const {
     case ForceElementKind::SpringDamper: return model_->springDampers[e.index].jMarker;
     case ForceElementKind::LinearField: return model_->linearFields[e.index].jMarker;
     case ForceElementKind::VectorForce: return model_->vectorForces[e.index].jFloat;
+    case ForceElementKind::Contact: return model_->contacts[e.index].jMarker;
   }
   return -1;
 }

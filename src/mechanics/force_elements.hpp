@@ -1,6 +1,6 @@
 #pragma once
 // Applied force elements: SFORCE, SPRINGDAMPER, BUSHING / FIELD / BEAM (one linear law) and
-// VFORCE / VTORQUE / GFORCE (docs/theory.md §6). Each element computes, templated on the
+// VFORCE / VTORQUE / GFORCE (docs/theory.md §6) and CONTACT (§6c, mechanics/contact/). Each element computes, templated on the
 // scalar, the force and torque it applies to the part of its I marker and the reaction on the
 // part of its J (or JFLOAT) marker, from the marker frames and velocities. The residual
 // subtracts them from the Newton-Euler rows, so the Newton matrix, formed on dual numbers, holds
@@ -13,13 +13,14 @@
 #include <Eigen/Dense>
 
 #include "mechanics/bound_function.hpp"
+#include "mechanics/contact/contact_loads.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
 
-enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce };
+enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Contact };
 
 // One element: its kind and its index in the Model's vector of that kind.
 struct ForceElementRef {
@@ -95,6 +96,8 @@ class ForceElements {
   template <class T>
   ElementLoads<T> vectorForceLoads(int k, double t, const T* y,
                                    const DynamicReads<T>* reads) const;
+  template <class T>
+  ElementLoads<T> contactElementLoads(int k, const T* y) const;
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
                    bool hasForce, bool hasTorque, const T* y, T* g) const;
@@ -257,6 +260,26 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
 }
 
 template <class T>
+ElementLoads<T> ForceElements::contactElementLoads(int k, const T* y) const {
+  const model::Contact& c = model_->contacts[k];
+  // DYNAMICS_ONLY: friction in dynamic analyses only (ADAMS); the mode is the session's.
+  const bool friction =
+      c.friction == model::Contact::Friction::On ||
+      (c.friction == model::Contact::Friction::DynamicsOnly &&
+       model_->analysisStatus.mode == model::AnalysisMode::Dynamics);
+  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, y, friction);
+  ElementLoads<T> l;
+  l.force = cl.force;
+  l.torque = cl.torqueAtI;
+  l.hasForce = l.hasTorque = true;
+  l.reactionMarker = c.jMarker;
+  l.reactionPoint = cl.jOrigin;
+  l.reactionForce = -cl.force;
+  l.reactionTorque = cl.torqueAtJ;
+  return l;
+}
+
+template <class T>
 ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
                                      const DynamicReads<T>* reads) const {
   switch (e.kind) {
@@ -264,6 +287,7 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
     case ForceElementKind::SpringDamper: return springDamperLoads(e.index, y);
     case ForceElementKind::LinearField: return linearFieldLoads(e.index, y);
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
+    case ForceElementKind::Contact: return contactElementLoads(e.index, y);
   }
   return {};
 }

@@ -25,9 +25,10 @@ enum class MeasureKind {
   SForceForce, // SFORCE(id, jflag, comp, rm)
   JPrimForce,  // JPRIM(id, jflag, comp, rm)
   // Read-back of the other force elements, same signature as SFORCE; `element` indexes
-  // Model::springDampers, linearFields (BUSH, FIELD, BEAM) or vectorForces (VFORCE...).
+  // Model::springDampers, linearFields (BUSH, FIELD, BEAM), vectorForces (VFORCE...) or
+  // contacts (CONTACT).
   SpringDamperForce, BushingForce, FieldForce, BeamForce, VForceForce, VTorqueForce,
-  GForceForce,
+  GForceForce, ContactForce,
   // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
   // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
   VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
@@ -75,7 +76,7 @@ struct Measure {
       case MeasureKind::SpringDamperForce: case MeasureKind::BushingForce:
       case MeasureKind::FieldForce: case MeasureKind::BeamForce:
       case MeasureKind::VForceForce: case MeasureKind::VTorqueForce:
-      case MeasureKind::GForceForce:
+      case MeasureKind::GForceForce: case MeasureKind::ContactForce:
       case MeasureKind::NetForce:
         return true;
       default:

@@ -3,6 +3,7 @@
 #include <map>
 #include <set>
 
+#include "model/contact_builder.hpp"
 #include "model/coupling_builder.hpp"
 #include "model/data_element_builder.hpp"
 #include "model/force_element_builder.hpp"
@@ -42,6 +43,8 @@ const std::set<std::string>& supportedStatements() {
                                           "DEBUG",
                                           // events (sensor_builder.cpp)
                                           "SENSOR",
+                                          // 3-D contact (contact_builder.cpp)
+                                          "CONTACT",
                                           // results-file request: warns (no .res writer yet)
                                           "RESULTS",
                                           // integrator choice (analysis_settings.cpp)
@@ -57,6 +60,7 @@ struct StatementGroups {
   std::vector<const Statement*> userEquations;  // VARIABLE, DIFF, ARRAY, LSE, TFSISO, ...
   std::vector<const Statement*> couplings;      // COUPLER, GEAR
   std::vector<const Statement*> gcons;          // GCON
+  std::vector<const Statement*> contacts;       // CONTACT
 };
 
 // OUTPUT statement: REQSAVE and (NO)SEPARATOR are supported; the others warn.
@@ -113,6 +117,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       groups.couplings.push_back(&s);
     } else if (s.name == "GCON") {
       groups.gcons.push_back(&s);
+    } else if (s.name == "CONTACT") {
+      groups.contacts.push_back(&s);
     } else if (s.name == "REQUEST") {
       groups.requests.push_back(&s);
     } else if (s.name == "EQUILIBRIUM") {
@@ -345,7 +351,7 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
     } else if (bindAnalysisVariable(call.name, forRequest, m, fail)) {
       // MODE, HSIZE, ORDER, NJAC, NRHS; CPU refused (model/analysis_status.hpp)
     } else if (call.name == "NFORCE" || call.name == "PTCV" || call.name == "CVCV" ||
-               call.name == "FRICTION" || call.name == "CONTACT") {
+               call.name == "FRICTION") {
       // Read-backs of elements the solver rejects at input (expr4): name the missing element.
       const long eid = call.args.empty() ? 0 : call.args[0];
       fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
@@ -403,6 +409,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildGeneralConstraints(groups.gcons, model, diags);
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(groups.forceElements, model, diags);
+  // CONTACT (contact_builder.cpp): reads the GRAPHICS solids, after every marker exists.
+  buildContacts(groups.contacts, dataset, model, diags);
 
   // Functions, once every element they may read exists (a force may read another's force).
   bindSForceFunctions(groups.sforces, model, diags);
