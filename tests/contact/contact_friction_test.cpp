@@ -74,8 +74,11 @@ TEST(ContactFriction, BlockBelowTheFrictionAngleSticksAtTheStictionCreepSpeed) {
   const double creep = w * kVs;
   const std::vector<Sample> run = simulate(build(blockDeck(phi)), 1.0, 1e-2, 1e-7, 1e-3);
   ASSERT_EQ(run.size(), 101u);
+  // The block lands with no normal force and gains some slip before the normal force builds up
+  // (under a millisecond): judge the sticking from 0.1 s on.
   double fastest = 0.0;
-  for (const Sample& s : run) fastest = std::max(fastest, std::abs(s.v.x()));
+  for (const Sample& s : run)
+    if (s.t >= 0.1) fastest = std::max(fastest, std::abs(s.v.x()));
   const Sample& last = run.back();
   std::printf("sticking block: creep %.8e (closed form %.8e, rel %.2e), fastest %.3e, moved "
               "%.3e m in 1 s\n",
@@ -99,19 +102,27 @@ TEST(ContactFriction, SphereRollsWithoutSlipAtFiveSeventhsGSinPhi) {
                            body +
                            "MARKER/20, PART=2\n"
                            "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
-                           "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e6, DAMPING=1e3, "
-                           "DMAX=1e-4, EXPONENT=1.5" +
+                           "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e9, DAMPING=3e3, "
+                           "DMAX=1e-6, EXPONENT=1.5" +
                            kFriction + gravity(phi) + "END\n";
   const std::vector<Sample> run = simulate(build(deck), 1.0, 1e-2, 1e-7, 1e-3);
   ASSERT_EQ(run.size(), 101u);
+  // The rigid-sphere truth. The contact force acts midway between the surfaces, at r - d/2 from
+  // the centre (d the penetration), so the compliant sphere rolls at g sin(phi) / (1 + I/(m
+  // (r - d/2)^2)), below the rigid value by about 0.29 d/r: STIFFNESS = 1e9 makes d = (m g
+  // cos(phi)/k)^(2/3) = 4.4e-6, 1.3e-5 relative.
   const double rolling = 5.0 / 7.0 * kG * std::sin(phi);
   const Sample& a = run[50];
   const Sample& b = run[100];
   const double accel = (b.v.x() - a.v.x()) / (b.t - a.t);
-  // The velocity of the sphere's lowest point, v + w x (-r e_z), along x: v_x - r w_y.
+  // The velocity of the sphere's lowest point, v + w x (-r e_z), along x: v_x - r w_y. With
+  // friction F: v' = g sin phi - F/m and r w_y' = (5/2) F/m, so v - (5/7) g sin phi t = (2/7)
+  // slip at every instant: both stay below vs once the sphere has landed (from 0.1 s on; it
+  // lands with no normal force and slips for under a millisecond).
   double worst = 0.0, slip = 0.0;
   int compared = 0;
   for (const Sample& s : run) {
+    if (s.t < 0.1) continue;
     worst = std::max(worst, std::abs(s.v.x() - rolling * s.t));
     slip = std::max(slip, std::abs(s.v.x() - r * s.w.y()));
     ++compared;
@@ -123,7 +134,7 @@ TEST(ContactFriction, SphereRollsWithoutSlipAtFiveSeventhsGSinPhi) {
   // v = (5/7) g sin(phi) t up to the stiction creep (below vs) and the settling transient.
   EXPECT_LT(worst, kVs);
   EXPECT_LT(slip, kVs);  // rolls: the contact point never leaves the stiction branch
-  EXPECT_EQ(compared, 101);
+  EXPECT_EQ(compared, 91);
 }
 
 }  // namespace

@@ -84,7 +84,7 @@ TEST(ContactNormalLaw, ImpactBounceMatchesTheIntegratedImpactOde) {
   const model::Model m = build(ballDeck(
       "IMPACT, STIFFNESS=1e6, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ode.g));
   const double dt = 1e-5, end = 0.02;
-  const std::vector<Sample> run = simulate(m, end, dt, 1e-9, 1e-5);
+  const std::vector<Sample> run = simulate(m, end, dt, 1e-10, 2e-6);
   ASSERT_EQ(run.size(), 2001u);
   std::vector<double> t, depth;
   for (const Sample& s : run) {
