@@ -36,8 +36,9 @@ int referenceMarker(const Statement& g, const char* name, const Model& model,
   const long id = static_cast<long>(a->values[0].number);
   const auto it = model.markerIndex.find(id);
   if (it == model.markerIndex.end()) {
-    diags.error(a->where, g.subject(), std::string(name) + "=" + std::to_string(id) +
-                    " names no marker", "Use the id of a MARKER statement of this data set.");
+    diags.error(a->where, g.subject(),
+                std::string(name) + "=" + std::to_string(id) + " names no marker",
+                "Use the id of a MARKER statement of this data set.");
     return -1;
   }
   return it->second;
@@ -99,8 +100,7 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
     }
     return false;
   } else if (kind == "CYLINDER" || kind == "FRUSTUM" || kind == "TORUS" || kind == "PLANE") {
-    diags.error(where, subject,
-                at(g) + " is a " + kind + ": contact with it is not supported yet",
+    diags.error(where, subject, at(g) + " is a " + kind + ": contact with it is not supported yet",
                 "Use ELLIPSOID (sphere) or BOX solids; a floor is a large BOX.");
     return false;
   } else {
@@ -117,8 +117,7 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
 
 // IGEOM or JGEOM: every solid, all on one part; false after a diagnostic.
 bool readSide(const Statement& s, const char* name, const std::map<long, const Statement*>& gr,
-              const Model& model, Diagnostics& diags, std::vector<ContactSolid>& out,
-              int& part) {
+              const Model& model, Diagnostics& diags, std::vector<ContactSolid>& out, int& part) {
   const Argument* a = s.find(name);
   if (!a) return false;  // required by the schema: the reader reported it
   bool ok = true;
@@ -126,9 +125,10 @@ bool readSide(const Statement& s, const char* name, const std::map<long, const S
     const long id = static_cast<long>(v.number);
     const auto it = gr.find(id);
     if (it == gr.end()) {
-      diags.error(v.where, s.subject(), std::string(name) + " names GRAPHICS/" +
-                      std::to_string(id) + ", which does not exist",
-                  "Use the id of a GRAPHICS statement of this data set.");
+      diags.error(
+          v.where, s.subject(),
+          std::string(name) + " names GRAPHICS/" + std::to_string(id) + ", which does not exist",
+          "Use the id of a GRAPHICS statement of this data set.");
       ok = false;
       continue;
     }
@@ -157,8 +157,8 @@ void readNormalLaw(StatementArguments& a, Contact& c) {
   const Statement& s = a.statement();
   const bool impact = s.has("IMPACT"), poisson = s.has("POISSON");
   if (impact == poisson) {
-    a.error(s.where, impact ? "give only one of IMPACT and POISSON"
-                            : "the normal force law is missing",
+    a.error(s.where,
+            impact ? "give only one of IMPACT and POISSON" : "the normal force law is missing",
             "Add IMPACT (STIFFNESS, DAMPING, DMAX, EXPONENT) or POISSON (PENALTY, "
             "RESTITUTION_COEFFICIENT).");
     return;
@@ -168,7 +168,9 @@ void readNormalLaw(StatementArguments& a, Contact& c) {
     const std::optional<double> v = a.real(name);
     if (!v) return;
     if (*v < 0.0 || (positive && *v == 0.0)) {
-      a.error(*a.find(name), std::string(name) + " = " + std::to_string(*v) + (positive ? " must be positive" : " must not be negative"),
+      a.error(*a.find(name),
+              std::string(name) + " = " + std::to_string(*v) +
+                  (positive ? " must be positive" : " must not be negative"),
               std::string("Give ") + name + (positive ? " > 0." : " >= 0."));
       return;
     }
@@ -222,12 +224,13 @@ void readFriction(StatementArguments& a, Contact& c) {
 }
 
 void rejectUnsupported(StatementArguments& a) {
-  for (const char* name : {"ICURVE", "JCURVE", "IFLIP_GEOMETRY", "JFLIP_GEOMETRY",
-                           "AUGMENTED_LAGRANGIAN_FORMULATION", "NORMAL_FUNCTION",
-                           "FRICTION_FUNCTION", "NORMAL_ROUTINE", "FRICTION_ROUTINE"})
+  for (const char* name :
+       {"ICURVE", "JCURVE", "IFLIP_GEOMETRY", "JFLIP_GEOMETRY", "AUGMENTED_LAGRANGIAN_FORMULATION",
+        "NORMAL_FUNCTION", "FRICTION_FUNCTION", "NORMAL_ROUTINE", "FRICTION_ROUTINE"})
     if (const Argument* x = a.find(name))
-      a.unsupported(*x, "Remove it: 3-D solid contact (IGEOM, JGEOM) with IMPACT or POISSON "
-                        "and Coulomb friction is what the solver simulates.");
+      a.unsupported(*x,
+                    "Remove it: 3-D solid contact (IGEOM, JGEOM) with IMPACT or POISSON "
+                    "and Coulomb friction is what the solver simulates.");
   if (const std::optional<std::string> type = a.word("TYPE"); type && *type != "SOLID_TO_SOLID")
     a.unsupported(*a.find("TYPE"), "Only TYPE = SOLID_TO_SOLID is supported.");
 }

@@ -33,17 +33,18 @@ const char* kFriction =
 
 // A 0.2 x 0.2 x 0.1 block (mass 1) resting on a ground box floor whose top face is z = 0.
 std::string blockDeck(double phi) {
-  return std::string("block on an incline\n"
-                     "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND\n"
-                     "PART/1, GROUND\n"
-                     "MARKER/10, PART=1, QP=-50,-50,-1\n"
-                     "GRAPHICS/1, BOX, CORNER=10, X=100, Y=100, Z=1\n"
-                     "PART/2, MASS=1, CM=20, IP=0.00417,0.00417,0.00667, QG=0,0,0.05\n"
-                     "MARKER/20, PART=2\n"
-                     "MARKER/21, PART=2, QP=-0.1,-0.1,-0.05\n"
-                     "GRAPHICS/2, BOX, CORNER=21, X=0.2, Y=0.2, Z=0.1\n"
-                     "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e6, DAMPING=1e3, "
-                     "DMAX=1e-6, EXPONENT=1") +
+  return std::string(
+             "block on an incline\n"
+             "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND\n"
+             "PART/1, GROUND\n"
+             "MARKER/10, PART=1, QP=-50,-50,-1\n"
+             "GRAPHICS/1, BOX, CORNER=10, X=100, Y=100, Z=1\n"
+             "PART/2, MASS=1, CM=20, IP=0.00417,0.00417,0.00667, QG=0,0,0.05\n"
+             "MARKER/20, PART=2\n"
+             "MARKER/21, PART=2, QP=-0.1,-0.1,-0.05\n"
+             "GRAPHICS/2, BOX, CORNER=21, X=0.2, Y=0.2, Z=0.1\n"
+             "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e6, DAMPING=1e3, "
+             "DMAX=1e-6, EXPONENT=1") +
          kFriction + gravity(phi) + "END\n";
 }
 
@@ -80,9 +81,10 @@ TEST(ContactFriction, BlockBelowTheFrictionAngleSticksAtTheStictionCreepSpeed) {
   for (const Sample& s : run)
     if (s.t >= 0.1) fastest = std::max(fastest, std::abs(s.v.x()));
   const Sample& last = run.back();
-  std::printf("sticking block: creep %.8e (closed form %.8e, rel %.2e), fastest %.3e, moved "
-              "%.3e m in 1 s\n",
-              last.v.x(), creep, std::abs(last.v.x() / creep - 1), fastest, last.r.x());
+  std::printf(
+      "sticking block: creep %.8e (closed form %.8e, rel %.2e), fastest %.3e, moved "
+      "%.3e m in 1 s\n",
+      last.v.x(), creep, std::abs(last.v.x() / creep - 1), fastest, last.r.x());
   EXPECT_LT(fastest, kVs);  // never leaves the stiction branch: it sticks
   EXPECT_NEAR(last.v.x(), creep, 1e-4 * creep);
 }
@@ -93,12 +95,13 @@ TEST(ContactFriction, SphereRollsWithoutSlipAtFiveSeventhsGSinPhi) {
   char body[160];
   std::snprintf(body, sizeof body, "PART/2, MASS=1, CM=20, IP=%.17g,%.17g,%.17g, QG=0,0,0.1\n",
                 inertia, inertia, inertia);
-  const std::string deck = std::string("rolling sphere\n"
-                                       "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, "
-                                       "TIME=SECOND\n"
-                                       "PART/1, GROUND\n"
-                                       "MARKER/10, PART=1, QP=-50,-50,-1\n"
-                                       "GRAPHICS/1, BOX, CORNER=10, X=100, Y=100, Z=1\n") +
+  const std::string deck = std::string(
+                               "rolling sphere\n"
+                               "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, "
+                               "TIME=SECOND\n"
+                               "PART/1, GROUND\n"
+                               "MARKER/10, PART=1, QP=-50,-50,-1\n"
+                               "GRAPHICS/1, BOX, CORNER=10, X=100, Y=100, Z=1\n") +
                            body +
                            "MARKER/20, PART=2\n"
                            "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
@@ -127,9 +130,10 @@ TEST(ContactFriction, SphereRollsWithoutSlipAtFiveSeventhsGSinPhi) {
     slip = std::max(slip, std::abs(s.v.x() - r * s.w.y()));
     ++compared;
   }
-  std::printf("rolling sphere: a = %.8f, (5/7) g sin phi = %.8f (rel %.2e); max |v - (5/7) g "
-              "sin phi t| = %.3e, max slip %.3e over %d samples\n",
-              accel, rolling, std::abs(accel / rolling - 1), worst, slip, compared);
+  std::printf(
+      "rolling sphere: a = %.8f, (5/7) g sin phi = %.8f (rel %.2e); max |v - (5/7) g "
+      "sin phi t| = %.3e, max slip %.3e over %d samples\n",
+      accel, rolling, std::abs(accel / rolling - 1), worst, slip, compared);
   EXPECT_NEAR(accel, rolling, 1e-4 * rolling);
   // v = (5/7) g sin(phi) t up to the stiction creep (below vs) and the settling transient.
   EXPECT_LT(worst, kVs);

@@ -156,9 +156,10 @@ void checkJacobian(const std::string& text, const Eigen::VectorXd& velocity) {
     scale = std::max(scale, exact.col(c).cwiseAbs().maxCoeff());
     ++columns;
   }
-  std::printf("contact Jacobian: max |exact - central difference| %.3e of max entry %.3e over "
-              "%d columns\n",
-              worst, scale, columns);
+  std::printf(
+      "contact Jacobian: max |exact - central difference| %.3e of max entry %.3e over "
+      "%d columns\n",
+      worst, scale, columns);
   EXPECT_EQ(columns, n);
   // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches.
   EXPECT_LT(worst, 1e-6 * scale);
@@ -173,12 +174,13 @@ TEST(ContactModel, SphereOnBoxPartialsAreExact) {
   // dynamic branch, on the transition branch and on the stiction branch.
   for (const double z : {0.098, 0.0995})
     for (const double vx : {2.0, 0.5, 0.05}) {
-      const std::string deck = std::string("sphere on box\n"
-                                           "PART/1, GROUND\n"
-                                           "MARKER/10, PART=1, QP=-1,-1,-1\n"
-                                           "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n"
-                                           "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, "
-                                           "QG=0.1,0.2,") +
+      const std::string deck = std::string(
+                                   "sphere on box\n"
+                                   "PART/1, GROUND\n"
+                                   "MARKER/10, PART=1, QP=-1,-1,-1\n"
+                                   "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n"
+                                   "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, "
+                                   "QG=0.1,0.2,") +
                                std::to_string(z) +
                                "\nMARKER/20, PART=2\n"
                                "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, "
@@ -194,17 +196,18 @@ TEST(ContactModel, SphereOnBoxPartialsAreExact) {
 
 TEST(ContactModel, BoxOnBoxPartialsAreExact) {
   // A tilted block (REULER) with two corners in the floor, sliding and turning.
-  const std::string deck = std::string("box on box\n"
-                                       "PART/1, GROUND\n"
-                                       "MARKER/10, PART=1, QP=-1,-1,-1\n"
-                                       "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n"
-                                       "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.006, "
-                                       "QG=0,0,0.058, REULER=0,5D,0\n"
-                                       "MARKER/20, PART=2\n"
-                                       "MARKER/21, PART=2, QP=-0.1,-0.1,-0.05\n"
-                                       "GRAPHICS/2, BOX, CORNER=21, X=0.2, Y=0.2, Z=0.1\n"
-                                       "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, "
-                                       "DAMPING=50, DMAX=1e-3, EXPONENT=1.5, ") +
+  const std::string deck = std::string(
+                               "box on box\n"
+                               "PART/1, GROUND\n"
+                               "MARKER/10, PART=1, QP=-1,-1,-1\n"
+                               "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n"
+                               "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.006, "
+                               "QG=0,0,0.058, REULER=0,5D,0\n"
+                               "MARKER/20, PART=2\n"
+                               "MARKER/21, PART=2, QP=-0.1,-0.1,-0.05\n"
+                               "GRAPHICS/2, BOX, CORNER=21, X=0.2, Y=0.2, Z=0.1\n"
+                               "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, "
+                               "DAMPING=50, DMAX=1e-3, EXPONENT=1.5, ") +
                            kFrictionLaw + "END\n";
   Eigen::VectorXd v(6);
   v << 0.7, 0.2, -0.1, 0.3, 0.2, 1.0;

@@ -29,8 +29,12 @@ std::string ballDeck(const std::string& law, double gravity) {
          "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0,0,0.1, VZ=-1\n"
          "MARKER/20, PART=2\n"
          "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
-         "CONTACT/1, IGEOM=2, JGEOM=1, " + law + "\n"
-         "ACCGRAV/KGRAV=" + std::to_string(-gravity) + "\n"
+         "CONTACT/1, IGEOM=2, JGEOM=1, " +
+         law +
+         "\n"
+         "ACCGRAV/KGRAV=" +
+         std::to_string(-gravity) +
+         "\n"
          "END\n";
 }
 
@@ -81,8 +85,8 @@ double returnTime(const std::vector<double>& t, const std::vector<double>& y) {
 
 TEST(ContactNormalLaw, ImpactBounceMatchesTheIntegratedImpactOde) {
   const ImpactOde ode{1e6, 1.5, 100.0, 1e-3, 9.81};
-  const model::Model m = build(ballDeck(
-      "IMPACT, STIFFNESS=1e6, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ode.g));
+  const model::Model m =
+      build(ballDeck("IMPACT, STIFFNESS=1e6, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ode.g));
   const double dt = 1e-5, end = 0.02;
   const std::vector<Sample> run = simulate(m, end, dt, 1e-10, 2e-6);
   ASSERT_EQ(run.size(), 2001u);
@@ -105,10 +109,11 @@ TEST(ContactNormalLaw, ImpactBounceMatchesTheIntegratedImpactOde) {
   double worst = 0.0;
   for (size_t k = 0; k < run.size(); ++k) worst = std::max(worst, std::abs(depth[k] - truth[k]));
   RecordProperty("max_penetration", std::to_string(maxRun));
-  std::printf("IMPACT bounce: max penetration %.9e (truth %.9e, rel %.2e), duration %.9e "
-              "(truth %.9e, rel %.2e), worst |d - truth| %.2e over %zu samples\n",
-              maxRun, maxTruth, std::abs(maxRun / maxTruth - 1), durationRun, durationTruth,
-              std::abs(durationRun / durationTruth - 1), worst, run.size());
+  std::printf(
+      "IMPACT bounce: max penetration %.9e (truth %.9e, rel %.2e), duration %.9e "
+      "(truth %.9e, rel %.2e), worst |d - truth| %.2e over %zu samples\n",
+      maxRun, maxTruth, std::abs(maxRun / maxTruth - 1), durationRun, durationTruth,
+      std::abs(durationRun / durationTruth - 1), worst, run.size());
   ASSERT_GT(durationTruth, 0.0);
   // 1e-6 relative (the bar); the history to 1e-6 of the peak at every sample.
   EXPECT_NEAR(maxRun, maxTruth, 1e-6 * maxTruth);
@@ -118,8 +123,8 @@ TEST(ContactNormalLaw, ImpactBounceMatchesTheIntegratedImpactOde) {
 
 TEST(ContactNormalLaw, PoissonReboundRatioIsTheRestitutionCoefficient) {
   for (const double r : {0.3, 0.6, 0.9}) {
-    const model::Model m = build(
-        ballDeck("POISSON, PENALTY=1e5, RESTITUTION_COEFFICIENT=" + std::to_string(r), 0.0));
+    const model::Model m =
+        build(ballDeck("POISSON, PENALTY=1e5, RESTITUTION_COEFFICIENT=" + std::to_string(r), 0.0));
     // Contact lasts about pi sqrt(m/p) (1e-2 s at most); the ball is free well before 0.03 s.
     const std::vector<Sample> run = simulate(m, 0.03, 1e-4, 1e-8, 1e-5);
     ASSERT_EQ(run.size(), 301u);
