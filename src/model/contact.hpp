@@ -3,9 +3,10 @@
 // from GRAPHICS statements, and the normal and friction laws. Built by contact_builder.cpp;
 // the forces are computed by mechanics/contact/.
 
-#include <Eigen/Dense>
 #include <string>
 #include <vector>
+
+#include <Eigen/Dense>
 
 #include "common/source_location.hpp"
 

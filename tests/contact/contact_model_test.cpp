@@ -4,7 +4,8 @@
 //   file, a negative stiffness (and the other refusals of the builder);
 // - the CONTACT(id, jflag, comp, rm) read-back against the law on a resting, penetrating sphere;
 // - the exact partials of the IMPACT law and the friction curve in the Newton matrix against
-//   central differences of the residual, for sphere-box and box-box contacts with sliding.
+//   central differences of the residual, for sphere-box and box-box contacts with sliding;
+//   the sparse Newton matrix on its structural pattern equals the dense one.
 
 #include <gtest/gtest.h>
 
@@ -12,6 +13,7 @@
 
 #include "analysis/request_values.hpp"
 #include "contact/contact_support.hpp"
+#include "mechanics/jacobian_pattern.hpp"
 #include "support/built_model.hpp"
 
 namespace openmss::contact_test {
@@ -212,6 +214,41 @@ TEST(ContactModel, BoxOnBoxPartialsAreExact) {
   Eigen::VectorXd v(6);
   v << 0.7, 0.2, -0.1, 0.3, 0.2, 1.0;
   checkJacobian(deck, v);
+}
+
+TEST(ContactModel, SparsePatternHoldsTheContactEntries) {
+  // A sphere (part 2) in a moving box (part 3) and a third, free body (part 4): the contact
+  // couples parts 2 and 3 only, and the pattern must hold every entry it creates.
+  const model::Model m = build(std::string(
+      "sparse pattern\n"
+      "PART/1, GROUND\n"
+      "PART/3, MASS=5, CM=30, IP=1,1,1, QG=0,0,-0.5\n"
+      "MARKER/30, PART=3\n"
+      "MARKER/31, PART=3, QP=-1,-1,-0.5\n"
+      "GRAPHICS/1, BOX, CORNER=31, X=2, Y=2, Z=1\n"
+      "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0.1,0.2,0.098, VX=1, VY=0.3, VZ=-0.2, "
+      "WX=1, WY=2\n"
+      "MARKER/20, PART=2\n"
+      "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
+      "PART/4, MASS=1, CM=40, IP=1,1,1, QG=5,5,5\n"
+      "MARKER/40, PART=4\n"
+      "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=50, DMAX=1e-3, "
+      "EXPONENT=1.5, ") + kFrictionLaw + "END\n");
+  m.analysisStatus.mode = model::AnalysisMode::Dynamics;
+  mechanics::MultibodySystem s(m);
+  const Eigen::VectorXd y = s.initialState();
+  const Eigen::VectorXd yp = Eigen::VectorXd::Zero(y.size());
+  const mechanics::JacobianPattern pattern = mechanics::newtonMatrixPattern(s);
+  Eigen::SparseMatrix<double> sparse = pattern.matrix();
+  mechanics::SparseJacobianWork work;
+  Eigen::MatrixXd dense;
+  s.newtonMatrix(0.0, y, yp, 30.0, dense);
+  s.newtonMatrixSparse(0.0, y, yp, 30.0, pattern, sparse, work);
+  const double difference = (Eigen::MatrixXd(sparse) - dense).cwiseAbs().maxCoeff();
+  std::printf("contact sparse pattern: max |sparse - dense| %.3e, largest entry %.3e\n",
+              difference, dense.cwiseAbs().maxCoeff());
+  EXPECT_LE(difference, 1e-12 * dense.cwiseAbs().maxCoeff());
+  EXPECT_TRUE(s.rowsOutsidePattern(0.0, y, yp, 30.0, sparse, work).empty());
 }
 
 }  // namespace

@@ -14,11 +14,11 @@ namespace openmss::mechanics::contact {
 
 template <class T>
 struct ContactLoads {
-  V3<T> force;      // on I's part, through iOrigin
-  V3<T> torqueAtI;  // about iOrigin
-  V3<T> torqueAtJ;  // of the reaction -force, about jOrigin
+  V3<T> force;          // on I's part, through iOrigin
+  V3<T> torqueAtI;      // about iOrigin
+  V3<T> torqueAtJ;      // of the reaction -force, about jOrigin
   V3<T> iOrigin, jOrigin;
-  int points = 0;  // contact points found (0: separated)
+  int points = 0;       // contact points found (0: separated)
   double maxDepth = 0.0;
 };
 

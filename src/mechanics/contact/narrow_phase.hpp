@@ -52,8 +52,8 @@ void sphereSphere(const model::ContactSolid& si, const SolidFrame<T>& fi,
 
 // Sphere s (centre c) against box b: normal from the box towards the sphere.
 template <class T>
-bool sphereBox(const model::ContactSolid& s, const SolidFrame<T>& fs, const model::ContactSolid& b,
-               const SolidFrame<T>& fb, ContactPoint<T>& cp) {
+bool sphereBox(const model::ContactSolid& s, const SolidFrame<T>& fs,
+               const model::ContactSolid& b, const SolidFrame<T>& fb, ContactPoint<T>& cp) {
   double lo[3], hi[3];
   boxBounds(b, lo, hi);
   const double r = s.size[0];
