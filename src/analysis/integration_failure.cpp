@@ -31,6 +31,8 @@ std::string forceElementName(const model::Model& m, const mechanics::ForceElemen
       return "FRICTION/" + std::to_string(m.frictions[e.index].id);
     case K::MultiPoint:
       return "NFORCE/" + std::to_string(m.nforces[e.index].id);
+    case K::Contact:
+      return "CONTACT/" + std::to_string(m.contacts[e.index].id);
   }
   return "?";
 }

@@ -36,6 +36,8 @@ std::vector<std::string> modelSummaryLines(const mechanics::MultibodySystem& sys
       " (SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE)");
   if (!m.frictions.empty())  // docs/theory.md §13
     out.push_back("   Joint frictions:      " + std::to_string(m.frictions.size()));
+  if (!m.contacts.empty())  // docs/theory.md §6c
+    out.push_back("   Contacts:             " + std::to_string(m.contacts.size()) + " (CONTACT)");
   if (m.userDifferentialCount() + m.userAlgebraicCount() > 0)  // docs/theory.md §4a
     out.push_back("   User equations:       " + std::to_string(m.variables.size()) + " VARIABLE, " +
                   std::to_string(m.diffs.size()) + " DIFF, " +

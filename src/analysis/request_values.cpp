@@ -56,6 +56,7 @@ std::optional<mechanics::ForceElementRef> forceElementOf(model::MeasureKind kind
       return mechanics::ForceElementRef{FK::LinearField, element};
     case K::VForceForce: case K::VTorqueForce: case K::GForceForce:
       return mechanics::ForceElementRef{FK::VectorForce, element};
+    case K::ContactForce: return mechanics::ForceElementRef{FK::Contact, element};
     default: return std::nullopt;
   }
 }
@@ -172,7 +173,7 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
     case K::WDTM: return wdt.norm();
     case K::JointForce: case K::MotionForce: case K::SForceForce: case K::JPrimForce:
     case K::SpringDamperForce: case K::BushingForce: case K::FieldForce: case K::BeamForce:
-    case K::VForceForce: case K::VTorqueForce: case K::GForceForce: {
+    case K::VForceForce: case K::VTorqueForce: case K::GForceForce: case K::ContactForce: {
       Eigen::Vector3d f, tq;
       elementForce(s, ms.kind, ms.element, ms.atJ == 1, t, y, yp, f, tq);
       return component(f, tq, ms.component, k);

@@ -91,7 +91,7 @@ int printSummary(const commands::Session& s, bool ok) {
               "%d degrees of freedom (Gruebler count %d)\n",
               m->bodyCount(), m->joints.size(), m->motions.size(),
               m->sforces.size() + m->springDampers.size() + m->linearFields.size() +
-                  m->vectorForces.size(),
+                  m->vectorForces.size() + m->contacts.size(),
               m->requests.size(), s.degreesOfFreedom(), s.grueblerDegreesOfFreedom());
   const auto& r = s.summary();
   if (!r.analysis.empty())
@@ -195,7 +195,7 @@ int check(const std::string& path) {
   std::printf("  %d moving parts, %zu joints, %zu motions, %zu force elements, %zu requests\n",
               m.bodyCount(), m.joints.size(), m.motions.size(),
               m.sforces.size() + m.springDampers.size() + m.linearFields.size() +
-                  m.vectorForces.size(),
+                  m.vectorForces.size() + m.contacts.size(),
               m.requests.size());
   std::printf("  Gruebler count: %d\n", dof.gruebler);
   std::printf("  loops: %d independent, %s dependent\n", dof.loops.independent,

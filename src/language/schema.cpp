@@ -34,7 +34,7 @@ std::vector<StatementSpec> finalStatementTable() {
   markSupported(t, {"TITLE", "UNITS", "PART", "MARKER", "JOINT", "MOTION", "SFORCE", "ACCGRAV",
                     "REQUEST", "GRAPHICS", "OUTPUT", "END", "SPRINGDAMPER", "BUSHING", "FIELD",
                     "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC", "INTEGRATOR",
-                    "KINEMATICS", "DEBUG", "MATERIAL"});
+                    "KINEMATICS", "DEBUG", "MATERIAL", "CONTACT"});
   return t;
 }
 

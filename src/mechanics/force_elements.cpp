@@ -28,6 +28,7 @@ ForceElements::ForceElements(const model::Model& model) : model_(&model) {
   add(ForceElementKind::VectorForce, model.vectorForces.size());
   add(ForceElementKind::Friction, model.frictions.size());
   add(ForceElementKind::MultiPoint, model.nforces.size());
+  add(ForceElementKind::Contact, model.contacts.size());
   for (const model::SpringDamper& s : model.springDampers) {
     double reference = 0.0;
     if (s.rotational) {
@@ -47,6 +48,7 @@ int ForceElements::iMarker(ForceElementRef e) const {
     case ForceElementKind::VectorForce: return model_->vectorForces[e.index].iMarker;
     case ForceElementKind::Friction: return model_->joints[model_->frictions[e.index].joint].iMarker;
     case ForceElementKind::MultiPoint: return -1;
+    case ForceElementKind::Contact: return model_->contacts[e.index].iMarker;
   }
   return -1;
 }
@@ -59,6 +61,7 @@ int ForceElements::jMarker(ForceElementRef e) const {
     case ForceElementKind::VectorForce: return model_->vectorForces[e.index].jFloat;
     case ForceElementKind::Friction: return model_->joints[model_->frictions[e.index].joint].jMarker;
     case ForceElementKind::MultiPoint: return model_->nforces[e.index].jMarker;
+    case ForceElementKind::Contact: return model_->contacts[e.index].jMarker;
   }
   return -1;
 }

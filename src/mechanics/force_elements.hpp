@@ -1,6 +1,6 @@
 #pragma once
 // Applied force elements: SFORCE, SPRINGDAMPER, BUSHING / FIELD / BEAM (one linear law) and
-// VFORCE / VTORQUE / GFORCE (docs/theory.md §6). Each element computes, templated on the
+// VFORCE / VTORQUE / GFORCE (docs/theory.md §6) and CONTACT (§6c, mechanics/contact/). Each element computes, templated on the
 // scalar, the force and torque it applies to the part of its I marker and the reaction on the
 // part of its J (or JFLOAT) marker, from the marker frames and velocities. The residual
 // subtracts them from the Newton-Euler rows, so the Newton matrix, formed on dual numbers, holds
@@ -15,6 +15,7 @@
 #include "mechanics/bound_function.hpp"
 #include "mechanics/expression_run_state.hpp"
 #include "mechanics/friction/joint_friction.hpp"
+#include "mechanics/contact/contact_loads.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
@@ -23,8 +24,9 @@ namespace openmss::mechanics {
 
 // Friction: FRICTION on a joint (mechanics/friction/joint_friction.hpp), acting between the
 // joint's I and J markers. MultiPoint: NFORCE, which loads every one of its I markers and J
-// (multiPointLoads); loads() is empty for it.
-enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Friction, MultiPoint };
+// (multiPointLoads); loads() is empty for it. Contact: CONTACT (mechanics/contact/).
+enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Friction, MultiPoint,
+                              Contact };
 
 // One element: its kind and its index in the Model's vector of that kind.
 struct ForceElementRef {
@@ -135,6 +137,7 @@ class ForceElements {
                                    const DynamicReads<T>* reads) const;
   template <class T>
   ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
+  ElementLoads<T> contactElementLoads(int k, const T* y) const;
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
                    bool hasForce, bool hasTorque, const T* y, T* g) const;
@@ -303,6 +306,26 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
 }
 
 template <class T>
+ElementLoads<T> ForceElements::contactElementLoads(int k, const T* y) const {
+  const model::Contact& c = model_->contacts[k];
+  // DYNAMICS_ONLY: friction in dynamic analyses only (ADAMS); the mode is the session's.
+  const bool friction =
+      c.friction == model::Contact::Friction::On ||
+      (c.friction == model::Contact::Friction::DynamicsOnly &&
+       model_->analysisStatus.mode == model::AnalysisMode::Dynamics);
+  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, y, friction);
+  ElementLoads<T> l;
+  l.force = cl.force;
+  l.torque = cl.torqueAtI;
+  l.hasForce = l.hasTorque = true;
+  l.reactionMarker = c.jMarker;
+  l.reactionPoint = cl.jOrigin;
+  l.reactionForce = -cl.force;
+  l.reactionTorque = cl.torqueAtJ;
+  return l;
+}
+
+template <class T>
 ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
                                      const DynamicReads<T>* reads) const {
   switch (e.kind) {
@@ -312,6 +335,7 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
     case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
     case ForceElementKind::MultiPoint: return {};  // multiPointLoads
+    case ForceElementKind::Contact: return contactElementLoads(e.index, y);
   }
   return {};
 }

@@ -184,6 +184,7 @@ class PatternBuilder {
         break;
       case ForceElementKind::SpringDamper:
       case ForceElementKind::LinearField:
+      case ForceElementKind::Contact:  // reads the poses of its two parts only
         break;
       case ForceElementKind::VectorForce: {
         const model::VectorForce& v = m_.vectorForces[e.index];

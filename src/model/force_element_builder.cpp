@@ -383,7 +383,7 @@ bool forceElementReadBack(const std::string& function, MeasureKind* kind) {
       {"SPDP", MeasureKind::SpringDamperForce}, {"BUSH", MeasureKind::BushingForce},
       {"FIELD", MeasureKind::FieldForce},       {"BEAM", MeasureKind::BeamForce},
       {"VFORCE", MeasureKind::VForceForce},     {"VTORQ", MeasureKind::VTorqueForce},
-      {"GFORCE", MeasureKind::GForceForce}};
+      {"GFORCE", MeasureKind::GForceForce},     {"CONTACT", MeasureKind::ContactForce}};
   for (const auto& [name, k] : kFunctions)
     if (function == name) {
       if (kind) *kind = k;
@@ -413,6 +413,8 @@ int findForceElement(const Model& model, MeasureKind kind, long id) {
     case MeasureKind::VForceForce: return vectorOf(VectorForce::Kind::VForce);
     case MeasureKind::VTorqueForce: return vectorOf(VectorForce::Kind::VTorque);
     case MeasureKind::GForceForce: return vectorOf(VectorForce::Kind::GForce);
+    case MeasureKind::ContactForce:
+      return find(model.contacts, [](const Contact&) { return true; });
     default: return -1;
   }
 }

@@ -25,7 +25,8 @@ enum class MeasureKind {
   SForceForce, // SFORCE(id, jflag, comp, rm)
   JPrimForce,  // JPRIM(id, jflag, comp, rm)
   // Read-back of the other force elements, same signature as SFORCE; `element` indexes
-  // Model::springDampers, linearFields (BUSH, FIELD, BEAM) or vectorForces (VFORCE...).
+  // Model::springDampers, linearFields (BUSH, FIELD, BEAM), vectorForces (VFORCE...) or
+  // contacts (CONTACT).
   SpringDamperForce, BushingForce, FieldForce, BeamForce, VForceForce, VTorqueForce,
   GForceForce,
   // FRICTION(id, comp): `element` indexes Model::frictions, `component` 1..22 (ADAMS's
@@ -34,6 +35,8 @@ enum class MeasureKind {
   // NFORCE(id, marker, comp, rm): `element` indexes Model::nforces, `i` the marker (one of
   // its I markers or its J) whose force is read.
   NForceForce,
+  // CONTACT(id, jflag, comp, rm): `element` indexes Model::contacts.
+  ContactForce,
   // User equations (`element` indexes Model::variables, diffs, arrays, pinputs or poutputs;
   // `component` is the 1-based position for ARYVAL, PINVAL, POUVAL).
   VarVal, Dif, Dif1, AryVal, PinVal, PouVal,
@@ -83,6 +86,7 @@ struct Measure {
       case MeasureKind::VForceForce: case MeasureKind::VTorqueForce:
       case MeasureKind::GForceForce: case MeasureKind::NForceForce:
       case MeasureKind::FrictionOutput:
+      case MeasureKind::ContactForce:
       case MeasureKind::NetForce:
         return true;
       default:

@@ -18,6 +18,7 @@
 #include "expr/expression.hpp"
 #include "model/analysis_settings.hpp"
 #include "model/analysis_status.hpp"
+#include "model/contact.hpp"
 #include "model/measure.hpp"
 #include "user/gse_routines.hpp"
 
@@ -410,6 +411,7 @@ struct Model {
   std::vector<VectorForce> vectorForces;  // VFORCE, VTORQUE, GFORCE
   std::vector<Friction> frictions;        // FRICTION (joint friction)
   std::vector<MultiPointForce> nforces;   // NFORCE
+  std::vector<Contact> contacts;          // CONTACT (contact_builder.cpp)
   // User equations: VARIABLE, DIFF, ARRAY, LSE/TFSISO, PINPUT, POUTPUT.
   std::vector<Variable> variables;
   std::vector<Diff> diffs;

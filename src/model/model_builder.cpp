@@ -4,6 +4,7 @@
 #include <map>
 #include <set>
 
+#include "model/contact_builder.hpp"
 #include "model/coupling_builder.hpp"
 #include "model/data_element_builder.hpp"
 #include "model/force_element_builder.hpp"
@@ -50,6 +51,8 @@ const std::set<std::string>& supportedStatements() {
                                           "DEBUG",
                                           // events (sensor_builder.cpp)
                                           "SENSOR",
+                                          // 3-D contact (contact_builder.cpp)
+                                          "CONTACT",
                                           // results-file request: warns (no .res writer yet)
                                           "RESULTS",
                                           // integrator choice (analysis_settings.cpp)
@@ -70,6 +73,7 @@ struct StatementGroups {
   std::vector<const Statement*> couplings;      // COUPLER, GEAR
   std::vector<const Statement*> gcons;          // GCON
   std::vector<const Statement*> frictions;      // FRICTION
+  std::vector<const Statement*> contacts;       // CONTACT
 };
 
 // OUTPUT statement: REQSAVE and (NO)SEPARATOR are supported; the others warn.
@@ -128,6 +132,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       groups.gcons.push_back(&s);
     } else if (s.name == "FRICTION") {
       groups.frictions.push_back(&s);
+    } else if (s.name == "CONTACT") {
+      groups.contacts.push_back(&s);
     } else if (s.name == "REQUEST") {
       groups.requests.push_back(&s);
     } else if (s.name == "EQUILIBRIUM") {
@@ -393,7 +399,7 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
       }
       if (m.component < 1 || m.component > 8)
         fail("the component must be 1 to 8", "1 |F|, 2-4 Fx Fy Fz, 5 |T|, 6-8 Tx Ty Tz.");
-    } else if (call.name == "PTCV" || call.name == "CVCV" || call.name == "CONTACT") {
+    } else if (call.name == "PTCV" || call.name == "CVCV") {
       // Read-backs of elements the solver rejects at input (expr4): name the missing element.
       const long eid = call.args.empty() ? 0 : call.args[0];
       fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
@@ -449,6 +455,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildGeneralConstraints(groups.gcons, model, diags);
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(groups.forceElements, model, diags);
+  // CONTACT (contact_builder.cpp): reads the GRAPHICS solids, after every marker exists.
+  buildContacts(groups.contacts, dataset, model, diags);
 
   // Functions, once every element they may read exists (a force may read another's force).
   bindSForceFunctions(groups.sforces, model, diags);

@@ -12,7 +12,7 @@
 
 namespace {
 
-using openmss::expr::Dual;
+using openmss::expr::Jet1;
 using openmss::expr::Jet2;
 namespace g = openmss::expr::general;
 
@@ -33,11 +33,11 @@ std::vector<Jet2> arguments(double x, const double* lead, int nlead, const doubl
   return a;
 }
 
-// IMPACT / BISTOP: force and its partials in x and in dxdt (one Dual pass each).
+// IMPACT / BISTOP: force and its partials in x and in dxdt (one Jet1 pass each).
 template <class F>
 void contact(const F& f, double x, double dxdt, double* vec, int* errflg) {
-  const Dual dx = f(Dual{x, 1.0}, Dual{dxdt, 0.0});
-  const Dual dv = f(Dual{x, 0.0}, Dual{dxdt, 1.0});
+  const Jet1 dx = f(Jet1{x, 1.0}, Jet1{dxdt, 0.0});
+  const Jet1 dv = f(Jet1{x, 0.0}, Jet1{dxdt, 1.0});
   vec[0] = dx.v;
   vec[1] = dx.d;
   vec[2] = dv.d;
@@ -134,9 +134,9 @@ void c_forsin(double x, double x0, double w, const double* par, int npar, int io
 void c_impact(double x, double dxdt, double x1, double k, double e, double cmax, double d,
               int /*iord*/, double* vec, int* errflg) {
   contact(
-      [&](const Dual& u, const Dual& v) {
-        return g::impact(u, v, Dual{x1, 0.0}, Dual{k, 0.0}, Dual{e, 0.0}, Dual{cmax, 0.0},
-                         Dual{d, 0.0});
+      [&](const Jet1& u, const Jet1& v) {
+        return g::impact(u, v, Jet1{x1, 0.0}, Jet1{k, 0.0}, Jet1{e, 0.0}, Jet1{cmax, 0.0},
+                         Jet1{d, 0.0});
       },
       x, dxdt, vec, errflg);
 }
@@ -144,9 +144,9 @@ void c_impact(double x, double dxdt, double x1, double k, double e, double cmax,
 void c_bistop(double x, double dxdt, double x1, double x2, double k, double e, double cmax,
               double d, int /*iord*/, double* vec, int* errflg) {
   contact(
-      [&](const Dual& u, const Dual& v) {
-        return g::bistop(u, v, Dual{x1, 0.0}, Dual{x2, 0.0}, Dual{k, 0.0}, Dual{e, 0.0},
-                         Dual{cmax, 0.0}, Dual{d, 0.0});
+      [&](const Jet1& u, const Jet1& v) {
+        return g::bistop(u, v, Jet1{x1, 0.0}, Jet1{x2, 0.0}, Jet1{k, 0.0}, Jet1{e, 0.0},
+                         Jet1{cmax, 0.0}, Jet1{d, 0.0});
       },
       x, dxdt, vec, errflg);
 }

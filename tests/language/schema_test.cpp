@@ -64,7 +64,8 @@ TEST(Schema, CoversTheCommandList) {
 TEST(Schema, MarksWhatTheSolverSupports) {
   EXPECT_TRUE(findStatementSpec("MARKER")->solverSupported);
   EXPECT_TRUE(findStatementSpec("END")->solverSupported);
-  EXPECT_FALSE(findStatementSpec("CONTACT")->solverSupported);
+  EXPECT_FALSE(findStatementSpec("NFORCE")->solverSupported);
+  EXPECT_TRUE(findStatementSpec("CONTACT")->solverSupported);
   EXPECT_TRUE(findCommandSpec("SIMULATE")->solverSupported);
   EXPECT_TRUE(findCommandSpec("LINEAR")->solverSupported);
   EXPECT_TRUE(findCommandSpec("SAVE")->solverSupported);

@@ -1,0 +1,160 @@
+#pragma once
+// Contact points between two solids of a CONTACT (docs/theory.md §6c, "Geometry"), templated
+// on the scalar: the choices (which face, which vertex) are made on values, the depth, normal
+// and point are computed on T so their partials are exact between switches.
+// Analytic pairs: sphere-sphere, sphere-box (a box floor is the plane), box-box (the vertices
+// of each box inside the other: exact for face-on-face and vertex-on-face contact).
+
+#include <algorithm>
+#include <vector>
+
+#include "common/vec3.hpp"
+#include "model/contact.hpp"
+
+namespace openmss::mechanics::contact {
+
+// A solid's reference marker in ground: origin and axes.
+template <class T>
+struct SolidFrame {
+  V3<T> p;
+  M3<T> a;
+};
+
+template <class T>
+struct ContactPoint {
+  V3<T> point;   // where the force acts, midway between the two surfaces
+  V3<T> normal;  // unit, from J's solid towards I's (the normal force pushes I along it)
+  T depth;       // penetration, > 0
+};
+
+// The box's extents along each axis of its corner frame: [lo, hi] (X, Y, Z may be negative).
+inline void boxBounds(const model::ContactSolid& b, double lo[3], double hi[3]) {
+  for (int k = 0; k < 3; ++k) {
+    lo[k] = std::min(0.0, b.size[k]);
+    hi[k] = std::max(0.0, b.size[k]);
+  }
+}
+
+template <class T>
+void sphereSphere(const model::ContactSolid& si, const SolidFrame<T>& fi,
+                  const model::ContactSolid& sj, const SolidFrame<T>& fj,
+                  std::vector<ContactPoint<T>>& out) {
+  const V3<T> d = fi.p - fj.p;
+  const double ri = si.size[0], rj = sj.size[0];
+  const double dist = std::sqrt(valueOf(dot(d, d)));
+  if (dist >= ri + rj || dist == 0.0) return;  // concentric spheres have no normal
+  const T len = norm(d);
+  const V3<T> n = d * (1.0 / len);
+  const T depth = (ri + rj) - len;
+  // Midway between the surface points fj.p + rj n and fi.p - ri n.
+  out.push_back({(fj.p + fi.p + n * T(rj - ri)) * T(0.5), n, depth});
+}
+
+// Sphere s (centre c) against box b: normal from the box towards the sphere.
+template <class T>
+bool sphereBox(const model::ContactSolid& s, const SolidFrame<T>& fs,
+               const model::ContactSolid& b, const SolidFrame<T>& fb, ContactPoint<T>& cp) {
+  double lo[3], hi[3];
+  boxBounds(b, lo, hi);
+  const double r = s.size[0];
+  const V3<T> q = fb.a.tmul(fs.p - fb.p);  // sphere centre in box axes
+  bool inside = true;
+  V3<T> closest = q;
+  for (int k = 0; k < 3; ++k) {
+    if (valueOf(q[k]) < lo[k]) {
+      closest[k] = T(lo[k]);
+      inside = false;
+    } else if (valueOf(q[k]) > hi[k]) {
+      closest[k] = T(hi[k]);
+      inside = false;
+    }
+  }
+  if (!inside) {
+    const V3<T> d = q - closest;
+    const double dist = std::sqrt(valueOf(dot(d, d)));
+    if (dist >= r) return false;
+    const T len = norm(d);
+    const V3<T> n = fb.a * (d * (1.0 / len));
+    const V3<T> surface = fb.p + fb.a * closest;
+    cp = {(surface + fs.p - n * T(r)) * T(0.5), n, T(r) - len};
+    return true;
+  }
+  // Centre inside the box: push out through the nearest face.
+  int axis = 0;
+  bool upper = true;
+  double best = 1e300;
+  for (int k = 0; k < 3; ++k) {
+    const double up = hi[k] - valueOf(q[k]), down = valueOf(q[k]) - lo[k];
+    if (up < best) best = up, axis = k, upper = true;
+    if (down < best) best = down, axis = k, upper = false;
+  }
+  const T gap = upper ? T(hi[axis]) - q[axis] : q[axis] - T(lo[axis]);
+  const V3<T> n = upper ? fb.a.c[axis] : -fb.a.c[axis];
+  cp = {fs.p + n * ((gap - T(r)) * 0.5), n, gap + r};
+  return true;
+}
+
+// The vertices of box v inside box b: normal out of b's nearest face, depth to that face.
+template <class T>
+void verticesInBox(const model::ContactSolid& v, const SolidFrame<T>& fv,
+                   const model::ContactSolid& b, const SolidFrame<T>& fb, bool flip,
+                   std::vector<ContactPoint<T>>& out) {
+  double lo[3], hi[3];
+  boxBounds(b, lo, hi);
+  for (int corner = 0; corner < 8; ++corner) {
+    const V3<T> local((corner & 1) ? T(v.size[0]) : T(0.0), (corner & 2) ? T(v.size[1]) : T(0.0),
+                      (corner & 4) ? T(v.size[2]) : T(0.0));
+    const V3<T> x = fv.p + fv.a * local;
+    const V3<T> q = fb.a.tmul(x - fb.p);
+    int axis = -1;
+    bool upper = true;
+    double best = 1e300;
+    for (int k = 0; k < 3 && best > 0.0; ++k) {
+      const double up = hi[k] - valueOf(q[k]), down = valueOf(q[k]) - lo[k];
+      if (up <= 0.0 || down <= 0.0) best = 0.0;  // outside
+      if (up < best && up > 0.0) best = up, axis = k, upper = true;
+      if (down < best && down > 0.0) best = down, axis = k, upper = false;
+    }
+    if (best <= 0.0 || axis < 0) continue;
+    const T depth = upper ? T(hi[axis]) - q[axis] : q[axis] - T(lo[axis]);
+    const V3<T> outward = upper ? fb.a.c[axis] : -fb.a.c[axis];
+    // The force on the vertex's box pushes it out of b: along `outward`; the normal of the
+    // contact points from J to I.
+    out.push_back({x + outward * (depth * 0.5), flip ? -outward : outward, depth});
+  }
+}
+
+// Every contact point between solid si (on I) and sj (on J). Returns false for a pair of
+// shapes the analytic narrow phase does not cover (the builder refuses those first).
+template <class T>
+bool narrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
+                 const model::ContactSolid& sj, const SolidFrame<T>& fj,
+                 std::vector<ContactPoint<T>>& out) {
+  using S = model::ContactSolid::Shape;
+  if (si.shape == S::Sphere && sj.shape == S::Sphere) {
+    sphereSphere(si, fi, sj, fj, out);
+  } else if (si.shape == S::Sphere && sj.shape == S::Box) {
+    ContactPoint<T> cp;
+    if (sphereBox(si, fi, sj, fj, cp)) out.push_back(cp);
+  } else if (si.shape == S::Box && sj.shape == S::Sphere) {
+    ContactPoint<T> cp;
+    if (sphereBox(sj, fj, si, fi, cp)) {
+      cp.normal = -cp.normal;
+      out.push_back(cp);
+    }
+  } else if (si.shape == S::Box && sj.shape == S::Box) {
+    verticesInBox(si, fi, sj, fj, false, out);
+    verticesInBox(sj, fj, si, fi, true, out);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+// Whether the narrow phase covers the pair (model building asks before any run).
+inline bool supportedPair(model::ContactSolid::Shape a, model::ContactSolid::Shape b) {
+  using S = model::ContactSolid::Shape;
+  return a != S::Cylinder && b != S::Cylinder;
+}
+
+}  // namespace openmss::mechanics::contact

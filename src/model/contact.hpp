@@ -1,0 +1,57 @@
+#pragma once
+// CONTACT elements of the Model (docs/theory.md §6c): the solid geometries of each side, read
+// from GRAPHICS statements, and the normal and friction laws. Built by contact_builder.cpp;
+// the forces are computed by mechanics/contact/.
+
+#include <string>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "common/source_location.hpp"
+
+namespace openmss::model {
+
+// One solid from a GRAPHICS statement, fixed to the part of its reference marker.
+struct ContactSolid {
+  enum class Shape {
+    Sphere,    // ELLIPSOID with XSCALE = YSCALE = ZSCALE (the diameter): centre at the CM marker
+    Box,       // BOX: CORNER marker, extents X, Y, Z along its axes (each may be negative)
+    Cylinder,  // CYLINDER: CM marker at the centre of the bottom disc, LENGTH along z, RADIUS
+  };
+  Shape shape = Shape::Sphere;
+  long graphicsId = 0;
+  int marker = -1;  // the reference marker (CM or CORNER)
+  int part = -1;
+  // Sphere: radius in x. Box: the extents X, Y, Z. Cylinder: radius in x, length in z.
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  // Radius of a sphere about the reference marker's origin that holds the solid: the
+  // bounding test that skips far pairs before the narrow phase (theory §6c, "Broad phase").
+  double boundingRadius = 0.0;
+  SourceLocation where;
+};
+
+struct Contact {
+  enum class NormalLaw { Impact, Poisson };
+  enum class Friction { Off, On, DynamicsOnly };
+  long id = 0;
+  std::vector<ContactSolid> iSolids, jSolids;
+  int iPart = -1, jPart = -1;
+  // The reference markers of the first I and J solids: the element's I and J markers (its
+  // force on I acts through iMarker's origin, its reaction on J through jMarker's).
+  int iMarker = -1, jMarker = -1;
+  NormalLaw law = NormalLaw::Impact;
+  // IMPACT: F = k d^e + STEP(d, 0, 0, DMAX, c) d', never pulling (d the penetration).
+  double stiffness = 0.0, damping = 0.0, dmax = 0.0, exponent = 1.0;
+  // POISSON: F = p d (approach) and e^2 p d (separation), blended over the normal
+  // transition velocity (theory §6c).
+  double penalty = 0.0, restitution = 1.0;
+  Friction friction = Friction::Off;
+  double muStatic = 0.0, muDynamic = 0.0;
+  double stictionVelocity = 0.0, frictionVelocity = 0.0;
+  // Cleared to skip the element (the generic ACTIVATE/DEACTIVATE mechanism sets it).
+  bool active = true;
+  SourceLocation where;
+};
+
+}  // namespace openmss::model

@@ -1,0 +1,280 @@
+#include "model/contact_builder.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <map>
+
+#include "model/statement_arguments.hpp"
+
+namespace openmss::model {
+namespace {
+
+using language::Argument;
+using language::Statement;
+
+std::string graphicsKind(const Statement& g) {
+  for (const char* kind : {"ELLIPSOID", "BOX", "CYLINDER", "FRUSTUM", "TORUS", "EXTERNAL", "PLANE",
+                           "ARC", "CIRCLE", "CURVE", "POINT", "SPDP", "FORCE"})
+    if (g.has(kind)) return kind;
+  if (g.has("OUTLINE")) return "OUTLINE";
+  return "";
+}
+
+std::string at(const Statement& g) {
+  return g.subject() + " (line " + std::to_string(g.where.line) + ")";
+}
+
+// The reference marker of a solid (CM= or CORNER=), as an index; -1 after a diagnostic.
+int referenceMarker(const Statement& g, const char* name, const Model& model,
+                    const SourceLocation& where, const std::string& subject, Diagnostics& diags) {
+  const Argument* a = g.find(name);
+  if (!a || a->values.empty()) {
+    diags.error(where, subject, at(g) + " has no " + name + "= marker to place its solid",
+                std::string("Add ") + name + "=<marker id> to " + g.subject() + ".");
+    return -1;
+  }
+  const long id = static_cast<long>(a->values[0].number);
+  const auto it = model.markerIndex.find(id);
+  if (it == model.markerIndex.end()) {
+    diags.error(a->where, g.subject(),
+                std::string(name) + "=" + std::to_string(id) + " names no marker",
+                "Use the id of a MARKER statement of this data set.");
+    return -1;
+  }
+  return it->second;
+}
+
+double number(const Statement& g, const char* name) {
+  const Argument* a = g.find(name);
+  return a && !a->values.empty() ? a->values[0].number : 0.0;
+}
+
+// One GRAPHICS solid for a CONTACT; false after a diagnostic at `where` (the IGEOM/JGEOM value).
+bool readSolid(const Statement& g, const Model& model, const SourceLocation& where,
+               const std::string& subject, Diagnostics& diags, ContactSolid& out) {
+  const std::string kind = graphicsKind(g);
+  out.graphicsId = g.id.value_or(0);
+  out.where = g.where;
+  if (kind == "ELLIPSOID") {
+    const double x = number(g, "XSCALE"), y = number(g, "YSCALE"), z = number(g, "ZSCALE");
+    if (!(x > 0.0) || x != y || x != z) {
+      diags.error(where, subject,
+                  at(g) + " is an ELLIPSOID with scales " + std::to_string(x) + ", " +
+                      std::to_string(y) + ", " + std::to_string(z) +
+                      ": only spheres (three equal positive scales) are supported as contact "
+                      "geometry so far",
+                  "Give XSCALE = YSCALE = ZSCALE (the diameter), or model the contact with "
+                  "spheres.");
+      return false;
+    }
+    out.shape = ContactSolid::Shape::Sphere;
+    out.size = Eigen::Vector3d(0.5 * x, 0.0, 0.0);
+    out.boundingRadius = 0.5 * x;
+    out.marker = referenceMarker(g, "CM", model, where, subject, diags);
+  } else if (kind == "BOX") {
+    out.shape = ContactSolid::Shape::Box;
+    out.size = Eigen::Vector3d(number(g, "X"), number(g, "Y"), number(g, "Z"));
+    if (out.size.cwiseAbs().minCoeff() == 0.0) {
+      diags.error(where, subject, at(g) + " is a BOX with a zero extent: it has no volume",
+                  "Give X, Y and Z all different from 0.");
+      return false;
+    }
+    out.boundingRadius = out.size.norm();
+    out.marker = referenceMarker(g, "CORNER", model, where, subject, diags);
+  } else if (kind == "EXTERNAL") {
+    const Argument* f = g.find("FILE");
+    const std::string file = f && !f->values.empty() ? f->values[0].written : "";
+    const std::filesystem::path path =
+        std::filesystem::path(model.file).parent_path() / std::filesystem::path(file);
+    if (file.empty() || !std::filesystem::exists(path)) {
+      diags.error(where, subject,
+                  at(g) + " reads its shell from the file '" + file + "', which is missing (" +
+                      path.string() + ")",
+                  "Put the file next to the data set, or replace the EXTERNAL geometry by "
+                  "ELLIPSOID or BOX solids.");
+    } else {
+      diags.error(where, subject,
+                  at(g) + " is an EXTERNAL shell (" + file +
+                      "): shell and Parasolid files are not read yet",
+                  "Replace it by ELLIPSOID (sphere) or BOX solids.");
+    }
+    return false;
+  } else if (kind == "CYLINDER" || kind == "FRUSTUM" || kind == "TORUS" || kind == "PLANE") {
+    diags.error(where, subject, at(g) + " is a " + kind + ": contact with it is not supported yet",
+                "Use ELLIPSOID (sphere) or BOX solids; a floor is a large BOX.");
+    return false;
+  } else {
+    diags.error(where, subject,
+                at(g) + " is " + (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
+                    ": CONTACT needs solids (a volume)",
+                "Name ELLIPSOID (sphere) or BOX GRAPHICS in IGEOM and JGEOM.");
+    return false;
+  }
+  if (out.marker < 0) return false;
+  out.part = model.markers[out.marker].part;
+  return true;
+}
+
+// IGEOM or JGEOM: every solid, all on one part; false after a diagnostic.
+bool readSide(const Statement& s, const char* name, const std::map<long, const Statement*>& gr,
+              const Model& model, Diagnostics& diags, std::vector<ContactSolid>& out, int& part) {
+  const Argument* a = s.find(name);
+  if (!a) return false;  // required by the schema: the reader reported it
+  bool ok = true;
+  for (const language::Value& v : a->values) {
+    const long id = static_cast<long>(v.number);
+    const auto it = gr.find(id);
+    if (it == gr.end()) {
+      diags.error(
+          v.where, s.subject(),
+          std::string(name) + " names GRAPHICS/" + std::to_string(id) + ", which does not exist",
+          "Use the id of a GRAPHICS statement of this data set.");
+      ok = false;
+      continue;
+    }
+    ContactSolid solid;
+    if (!readSolid(*it->second, model, v.where, s.subject(), diags, solid)) {
+      ok = false;
+      continue;
+    }
+    if (part >= 0 && solid.part != part) {
+      diags.error(v.where, s.subject(),
+                  std::string(name) + " solids lie on different parts (PART/" +
+                      std::to_string(model.parts[part].id) + " and PART/" +
+                      std::to_string(model.parts[solid.part].id) + ")",
+                  "Name the solids of one part in each of IGEOM and JGEOM; write one CONTACT "
+                  "per pair of parts.");
+      ok = false;
+      continue;
+    }
+    part = solid.part;
+    out.push_back(solid);
+  }
+  return ok && !out.empty();
+}
+
+void readNormalLaw(StatementArguments& a, Contact& c) {
+  const Statement& s = a.statement();
+  const bool impact = s.has("IMPACT"), poisson = s.has("POISSON");
+  if (impact == poisson) {
+    a.error(s.where,
+            impact ? "give only one of IMPACT and POISSON" : "the normal force law is missing",
+            "Add IMPACT (STIFFNESS, DAMPING, DMAX, EXPONENT) or POISSON (PENALTY, "
+            "RESTITUTION_COEFFICIENT).");
+    return;
+  }
+  auto nonNegative = [&](const char* name, double& out, bool positive) {
+    a.require(name, positive ? "a positive number" : "a number >= 0");
+    const std::optional<double> v = a.real(name);
+    if (!v) return;
+    if (*v < 0.0 || (positive && *v == 0.0)) {
+      a.error(*a.find(name),
+              std::string(name) + " = " + std::to_string(*v) +
+                  (positive ? " must be positive" : " must not be negative"),
+              std::string("Give ") + name + (positive ? " > 0." : " >= 0."));
+      return;
+    }
+    out = *v;
+  };
+  if (impact) {
+    c.law = Contact::NormalLaw::Impact;
+    nonNegative("STIFFNESS", c.stiffness, false);
+    nonNegative("DAMPING", c.damping, false);
+    nonNegative("DMAX", c.dmax, true);
+    nonNegative("EXPONENT", c.exponent, true);
+    for (const char* other : {"PENALTY", "RESTITUTION_COEFFICIENT"})
+      if (const Argument* x = a.find(other))
+        a.error(*x, std::string(other) + " belongs to POISSON, not IMPACT", "Remove it.");
+  } else {
+    c.law = Contact::NormalLaw::Poisson;
+    nonNegative("PENALTY", c.penalty, true);
+    a.require("RESTITUTION_COEFFICIENT", "a number from 0 to 1");
+    if (const Argument* r = a.find("RESTITUTION_COEFFICIENT"))
+      a.within(*r, 0.0, 1.0, "from 0 to 1", c.restitution);
+    for (const char* other : {"STIFFNESS", "DAMPING", "DMAX", "EXPONENT"})
+      if (const Argument* x = a.find(other))
+        a.error(*x, std::string(other) + " belongs to IMPACT, not POISSON", "Remove it.");
+  }
+}
+
+void readFriction(StatementArguments& a, Contact& c) {
+  const std::string mode = a.word("COULOMB_FRICTION").value_or("OFF");
+  c.friction = mode == "ON"              ? Contact::Friction::On
+               : mode == "DYNAMICS_ONLY" ? Contact::Friction::DynamicsOnly
+                                         : Contact::Friction::Off;
+  if (c.friction == Contact::Friction::Off) return;
+  auto value = [&](const char* name, double& out) {
+    a.require(name, "a number >= 0");
+    const std::optional<double> v = a.real(name);
+    if (v && *v < 0.0)
+      a.error(*a.find(name), std::string(name) + " must not be negative",
+              std::string("Give ") + name + " >= 0.");
+    else if (v)
+      out = *v;
+  };
+  value("MU_STATIC", c.muStatic);
+  value("MU_DYNAMIC", c.muDynamic);
+  value("STICTION_TRANSITION_VELOCITY", c.stictionVelocity);
+  value("FRICTION_TRANSITION_VELOCITY", c.frictionVelocity);
+  if (a.ok() && !(c.stictionVelocity > 0.0 && c.frictionVelocity > c.stictionVelocity))
+    a.error(a.statement().where,
+            "the transition velocities must satisfy 0 < STICTION_TRANSITION_VELOCITY < "
+            "FRICTION_TRANSITION_VELOCITY",
+            "Give a positive stiction velocity smaller than the friction velocity.");
+}
+
+void rejectUnsupported(StatementArguments& a) {
+  for (const char* name :
+       {"ICURVE", "JCURVE", "IFLIP_GEOMETRY", "JFLIP_GEOMETRY", "AUGMENTED_LAGRANGIAN_FORMULATION",
+        "NORMAL_FUNCTION", "FRICTION_FUNCTION", "NORMAL_ROUTINE", "FRICTION_ROUTINE"})
+    if (const Argument* x = a.find(name))
+      a.unsupported(*x,
+                    "Remove it: 3-D solid contact (IGEOM, JGEOM) with IMPACT or POISSON "
+                    "and Coulomb friction is what the solver simulates.");
+  if (const std::optional<std::string> type = a.word("TYPE"); type && *type != "SOLID_TO_SOLID")
+    a.unsupported(*a.find("TYPE"), "Only TYPE = SOLID_TO_SOLID is supported.");
+}
+
+}  // namespace
+
+void buildContacts(const std::vector<const Statement*>& statements,
+                   const language::Dataset& dataset, Model& model, Diagnostics& diags) {
+  if (statements.empty()) return;
+  std::map<long, const Statement*> graphics;
+  for (const Statement& g : dataset.statements)
+    if (g.name == "GRAPHICS" && g.id) graphics.emplace(*g.id, &g);
+  for (const Statement* s : statements) {
+    StatementArguments a(*s, diags);
+    Contact c;
+    c.id = s->id.value_or(0);
+    c.where = s->where;
+    rejectUnsupported(a);
+    readNormalLaw(a, c);
+    readFriction(a, c);
+    if (const Argument* f = a.find("FACETING_TOLERANCE"))
+      diags.warning(f->where, s->subject(),
+                    "FACETING_TOLERANCE has no effect: spheres and boxes are exact",
+                    "Remove it to silence this warning.");
+    const bool iOk = readSide(*s, "IGEOM", graphics, model, diags, c.iSolids, c.iPart);
+    const bool jOk = readSide(*s, "JGEOM", graphics, model, diags, c.jSolids, c.jPart);
+    if (!iOk || !jOk || !a.ok()) continue;
+    if (c.iPart == c.jPart) {
+      diags.error(s->where, s->subject(),
+                  "IGEOM and JGEOM are on the same part (PART/" +
+                      std::to_string(model.parts[c.iPart].id) + "): it cannot touch itself",
+                  "Name the solids of two different parts.");
+      continue;
+    }
+    c.iMarker = c.iSolids.front().marker;
+    c.jMarker = c.jSolids.front().marker;
+    model.contacts.push_back(c);
+  }
+}
+
+int findContact(const Model& model, long id) {
+  for (size_t k = 0; k < model.contacts.size(); ++k)
+    if (model.contacts[k].id == id) return static_cast<int>(k);
+  return -1;
+}
+
+}  // namespace openmss::model

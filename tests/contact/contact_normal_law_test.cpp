@@ -1,0 +1,156 @@
+// CONTACT normal laws in dynamic runs against independent truth (docs/theory.md §6c):
+// - IMPACT: a sphere landing on a box floor; its penetration history, maximum penetration and
+//   contact duration against the 1-DOF IMPACT ODE integrated here by classical RK4 with a step
+//   1000 times smaller than the run's output step.
+// - POISSON: without gravity the rebound speed is RESTITUTION_COEFFICIENT times the approach
+//   speed.
+// - Energy: a frictionless undamped IMPACT bounce returns the energy it took.
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "contact/contact_support.hpp"
+
+namespace openmss::contact_test {
+namespace {
+
+constexpr double kRadius = 0.1;
+
+// A sphere of radius 0.1 (mass 1) whose lowest point touches the top face (z = 0) of a ground
+// box floor at t = 0, moving down at 1 m/s, with the given CONTACT law and gravity.
+std::string ballDeck(const std::string& law, double gravity) {
+  return "ball on a floor\n"
+         "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND\n"
+         "PART/1, GROUND\n"
+         "MARKER/10, PART=1, QP=-1,-1,-1\n"
+         "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n"
+         "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0,0,0.1, VZ=-1\n"
+         "MARKER/20, PART=2\n"
+         "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
+         "CONTACT/1, IGEOM=2, JGEOM=1, " +
+         law +
+         "\n"
+         "ACCGRAV/KGRAV=" +
+         std::to_string(-gravity) +
+         "\n"
+         "END\n";
+}
+
+// The penetration d = R - z obeys d'' = g - F(d, d')/m with ADAMS's IMPACT force.
+struct ImpactOde {
+  double k, e, c, dmax, g;
+  double force(double d, double u) const {
+    if (d <= 0.0) return 0.0;
+    double damp = c;
+    if (d < dmax) {
+      const double s = d / dmax;
+      damp = c * s * s * (3.0 - 2.0 * s);
+    }
+    return std::max(0.0, k * std::pow(d, e) + damp * u);
+  }
+  void rate(const double x[2], double out[2]) const {
+    out[0] = x[1];
+    out[1] = g - force(x[0], x[1]);
+  }
+  void rk4(double x[2], double h) const {
+    double k1[2], k2[2], k3[2], k4[2], t[2];
+    rate(x, k1);
+    for (int i = 0; i < 2; ++i) t[i] = x[i] + 0.5 * h * k1[i];
+    rate(t, k2);
+    for (int i = 0; i < 2; ++i) t[i] = x[i] + 0.5 * h * k2[i];
+    rate(t, k3);
+    for (int i = 0; i < 2; ++i) t[i] = x[i] + h * k3[i];
+    rate(t, k4);
+    for (int i = 0; i < 2; ++i) x[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  }
+};
+
+// Peak of samples y(t) at uniform spacing by the parabola through the three largest neighbours.
+double peak(const std::vector<double>& y) {
+  const size_t k = std::max_element(y.begin(), y.end()) - y.begin();
+  if (k == 0 || k + 1 >= y.size()) return y[k];
+  const double a = 0.5 * (y[k + 1] - 2 * y[k] + y[k - 1]), b = 0.5 * (y[k + 1] - y[k - 1]);
+  return y[k] - b * b / (4 * a);
+}
+
+// First time after the peak where y falls back to 0 (linear interpolation between samples).
+double returnTime(const std::vector<double>& t, const std::vector<double>& y) {
+  const size_t top = std::max_element(y.begin(), y.end()) - y.begin();
+  for (size_t k = top + 1; k < y.size(); ++k)
+    if (y[k] <= 0.0) return t[k - 1] + (t[k] - t[k - 1]) * y[k - 1] / (y[k - 1] - y[k]);
+  return -1.0;
+}
+
+TEST(ContactNormalLaw, ImpactBounceMatchesTheIntegratedImpactOde) {
+  const ImpactOde ode{1e6, 1.5, 100.0, 1e-3, 9.81};
+  const model::Model m =
+      build(ballDeck("IMPACT, STIFFNESS=1e6, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ode.g));
+  const double dt = 1e-5, end = 0.02;
+  const std::vector<Sample> run = simulate(m, end, dt, 1e-10, 2e-6);
+  ASSERT_EQ(run.size(), 2001u);
+  std::vector<double> t, depth;
+  for (const Sample& s : run) {
+    t.push_back(s.t);
+    depth.push_back(kRadius - s.r.z());
+  }
+  // Truth: RK4 with h = dt/1000 from d = 0, d' = 1 (the deck's state at t = 0).
+  std::vector<double> truth(run.size());
+  double x[2] = {0.0, 1.0};
+  truth[0] = 0.0;
+  const int sub = 1000;
+  for (size_t k = 1; k < run.size(); ++k) {
+    for (int q = 0; q < sub; ++q) ode.rk4(x, dt / sub);
+    truth[k] = x[0];
+  }
+  const double maxTruth = peak(truth), durationTruth = returnTime(t, truth);
+  const double maxRun = peak(depth), durationRun = returnTime(t, depth);
+  double worst = 0.0;
+  for (size_t k = 0; k < run.size(); ++k) worst = std::max(worst, std::abs(depth[k] - truth[k]));
+  RecordProperty("max_penetration", std::to_string(maxRun));
+  std::printf(
+      "IMPACT bounce: max penetration %.9e (truth %.9e, rel %.2e), duration %.9e "
+      "(truth %.9e, rel %.2e), worst |d - truth| %.2e over %zu samples\n",
+      maxRun, maxTruth, std::abs(maxRun / maxTruth - 1), durationRun, durationTruth,
+      std::abs(durationRun / durationTruth - 1), worst, run.size());
+  ASSERT_GT(durationTruth, 0.0);
+  // 1e-6 relative (the bar); the history to 1e-6 of the peak at every sample.
+  EXPECT_NEAR(maxRun, maxTruth, 1e-6 * maxTruth);
+  EXPECT_NEAR(durationRun, durationTruth, 1e-6 * durationTruth);
+  EXPECT_LT(worst, 1e-6 * maxTruth);
+}
+
+TEST(ContactNormalLaw, PoissonReboundRatioIsTheRestitutionCoefficient) {
+  for (const double r : {0.3, 0.6, 0.9}) {
+    const model::Model m =
+        build(ballDeck("POISSON, PENALTY=1e5, RESTITUTION_COEFFICIENT=" + std::to_string(r), 0.0));
+    // Contact lasts about pi sqrt(m/p) (1e-2 s at most); the ball is free well before 0.03 s.
+    const std::vector<Sample> run = simulate(m, 0.03, 1e-4, 1e-8, 1e-5);
+    ASSERT_EQ(run.size(), 301u);
+    const Sample& last = run.back();
+    ASSERT_GT(last.r.z(), kRadius) << "separated";
+    const double ratio = last.v.z() / 1.0;
+    std::printf("POISSON r = %.2f: rebound ratio %.6f\n", r, ratio);
+    EXPECT_NEAR(ratio, r, 1e-3);
+  }
+}
+
+TEST(ContactNormalLaw, UndampedImpactBounceKeepsItsEnergy) {
+  const double g = 9.81;
+  const model::Model m =
+      build(ballDeck("IMPACT, STIFFNESS=1e6, DAMPING=0, DMAX=1e-3, EXPONENT=1.5", g));
+  const std::vector<Sample> run = simulate(m, 0.03, 1e-4, 1e-10, 1e-5);
+  ASSERT_EQ(run.size(), 301u);
+  auto energy = [&](const Sample& s) { return 0.5 * s.v.squaredNorm() + g * s.r.z(); };
+  const double before = energy(run.front()), after = energy(run.back());
+  ASSERT_GT(run.back().r.z(), kRadius) << "separated";
+  ASSERT_GT(run.back().v.z(), 0.0) << "rebounding";
+  const double impactEnergy = 0.5 * 1.0 * 1.0;  // kinetic energy at first touch
+  std::printf("undamped bounce: energy change %.3e of the impact energy\n",
+              (after - before) / impactEnergy);
+  EXPECT_LT(std::abs(after - before), 1e-6 * impactEnergy);
+}
+
+}  // namespace
+}  // namespace openmss::contact_test
