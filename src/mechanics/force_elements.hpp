@@ -137,7 +137,12 @@ class ForceElements {
                                    const DynamicReads<T>* reads) const;
   template <class T>
   ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
+  template <class T>
   ElementLoads<T> contactElementLoads(int k, const T* y) const;
+  // The analysis under way (the run state's; the default before any).
+  model::AnalysisMode analysisMode() const {
+    return run_ != nullptr ? run_->status().mode : model::AnalysisStatus{}.mode;
+  }
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
                    bool hasForce, bool hasTorque, const T* y, T* g) const;
@@ -312,7 +317,7 @@ ElementLoads<T> ForceElements::contactElementLoads(int k, const T* y) const {
   const bool friction =
       c.friction == model::Contact::Friction::On ||
       (c.friction == model::Contact::Friction::DynamicsOnly &&
-       model_->analysisStatus.mode == model::AnalysisMode::Dynamics);
+       analysisMode() == model::AnalysisMode::Dynamics);
   const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, y, friction);
   ElementLoads<T> l;
   l.force = cl.force;
@@ -345,7 +350,8 @@ ElementLoads<T> ForceElements::frictionLoads(int k, const T* y,
                                              const DynamicReads<T>* reads) const {
   const friction::FrictionAnchor* anchor = run_ != nullptr ? run_->frictionAnchor(k) : nullptr;
   const friction::FrictionResult<T> r = friction::frictionLoads(
-      *model_, layout_, reads != nullptr ? reads->constraints : nullptr, k, y, anchor);
+      *model_, layout_, reads != nullptr ? reads->constraints : nullptr, k, y, anchor,
+      analysisMode());
   const model::Joint& joint = model_->joints[model_->frictions[k].joint];
   ElementLoads<T> l;
   l.force = r.force;

@@ -268,7 +268,7 @@ void applyDebugArguments(const Statement& s, DebugSettings& debug, Diagnostics& 
 }
 
 bool bindExpression(const Model& model, const std::string& text, const SourceLocation& where,
-                    const std::string& subject, bool /*forForces*/, Diagnostics& diags,
+                    const std::string& subject, bool forForces, Diagnostics& diags,
                     BoundExpression& out, bool forConstraint, bool forRequest) {
   if (!expr::Expression::parse(text, where, subject, diags, out.expression)) return false;
   if (!bindDataCalls(model, out.expression, where, subject, diags)) return false;
@@ -276,8 +276,10 @@ bool bindExpression(const Model& model, const std::string& text, const SourceLoc
                               forRequest);
 }
 
+// `forForces` no longer restricts anything (force read-backs are allowed in every function,
+// docs/theory.md §4d); the parameter stays for the callers' sake.
 bool bindParsedExpression(const Model& model, const SourceLocation& where,
-                          const std::string& subject, bool forForces, Diagnostics& diags,
+                          const std::string& subject, bool /*forForces*/, Diagnostics& diags,
                           BoundExpression& out, bool forConstraint, bool forRequest) {
   const expr::UserCall* user = out.expression.userCall();
   if (user) {

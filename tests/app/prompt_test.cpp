@@ -70,7 +70,8 @@ TEST(Prompt, HelpListsEveryCommandWithItsSupportAndNoPromptTextWhenPiped) {
     EXPECT_NE(r.out.find(line), std::string::npos) << line;
   }
   EXPECT_NE(r.out.find("  SIMULATE      supported  runs an analysis"), std::string::npos);
-  EXPECT_NE(r.out.find("  SAVE          not yet    saves the model"), std::string::npos);
+  EXPECT_NE(r.out.find("  SAVE          supported  saves the model"), std::string::npos);
+  EXPECT_NE(r.out.find("  AUTOSCALE     not yet    "), std::string::npos);
   fs::remove_all(dir);
 }
 
@@ -92,7 +93,7 @@ TEST(Prompt, ContinuationLinesModelLoadAndSimulate) {
   fs::copy_file(kRevolute, dir / "rev.adm");
   const Result r = runPrompt(
       "file/model=rev\n"
-      "save/states\n"            // a model is loaded: now the solver says it cannot
+      "autoscale\n"              // a model is loaded: now the solver says it cannot
       "simulate/transient, &\n"  // continued with '&' ...
       "   end=0.5, &\n"          // ... over three lines
       "   steps=5\n"
@@ -100,7 +101,7 @@ TEST(Prompt, ContinuationLinesModelLoadAndSimulate) {
       "help\n",  // after STOP nothing is read
       dir);
   EXPECT_EQ(r.status, 1) << r.err;
-  EXPECT_NE(r.err.find("<stdin>:2:1: error: SAVE: SAVE is not supported yet"),
+  EXPECT_NE(r.err.find("<stdin>:2:1: error: AUTOSCALE: AUTOSCALE is not supported yet"),
             std::string::npos)
       << r.err;
   EXPECT_NE(r.out.find("model ./rev.adm: 1 moving parts, 1 joints, 0 motions; 1 degrees of "

@@ -134,8 +134,11 @@ TEST(ContactModel, ReadBackGivesTheForceOnEachPart) {
 // dG/dy of the residual: the Newton matrix with cj = 0 against central differences.
 void checkJacobian(const std::string& text, const Eigen::VectorXd& velocity) {
   const model::Model m = build(text);
-  m.analysisStatus.mode = model::AnalysisMode::Dynamics;
   mechanics::MultibodySystem s(m);
+  // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
+  mechanics::ExpressionRunState run(m);
+  run.status().mode = model::AnalysisMode::Dynamics;
+  s.setRunState(&run);
   Eigen::VectorXd y = s.initialState();
   y.segment<3>(StateLayout::kV) = velocity.head<3>();
   y.segment<3>(StateLayout::kW) = velocity.tail<3>();
@@ -234,8 +237,11 @@ TEST(ContactModel, SparsePatternHoldsTheContactEntries) {
       "MARKER/40, PART=4\n"
       "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=50, DMAX=1e-3, "
       "EXPONENT=1.5, ") + kFrictionLaw + "END\n");
-  m.analysisStatus.mode = model::AnalysisMode::Dynamics;
   mechanics::MultibodySystem s(m);
+  // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
+  mechanics::ExpressionRunState run(m);
+  run.status().mode = model::AnalysisMode::Dynamics;
+  s.setRunState(&run);
   const Eigen::VectorXd y = s.initialState();
   const Eigen::VectorXd yp = Eigen::VectorXd::Zero(y.size());
   const mechanics::JacobianPattern pattern = mechanics::newtonMatrixPattern(s);

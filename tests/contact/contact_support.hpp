@@ -12,6 +12,7 @@
 #include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
+#include "mechanics/expression_run_state.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
@@ -41,8 +42,11 @@ struct Sample {
 inline std::vector<Sample> simulate(const model::Model& m, double end, double step, double error,
                                     double hmax) {
   std::vector<Sample> out;
-  m.analysisStatus.mode = model::AnalysisMode::Dynamics;
   mechanics::MultibodySystem s(m);
+  // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
+  mechanics::ExpressionRunState run(m);
+  run.status().mode = model::AnalysisMode::Dynamics;
+  s.setRunState(&run);
   Eigen::VectorXd y = s.initialState(), yp;
   mechanics::removeRedundantConstraints(s, y);
   EXPECT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged);

@@ -98,7 +98,8 @@ double checkCase(const std::string& joint, const std::string& extra, const Case&
   std::uniform_real_distribution<double> u(-1.0, 1.0);
   for (int i = 0; i < yp.size(); ++i) yp(i) = u(again);
   const friction::FrictionResult<double> r =
-      friction::frictionLoads(m, s.layout(), &s.constraints(), 0, y.data(), run.frictionAnchor(0));
+      friction::frictionLoads(m, s.layout(), &s.constraints(), 0, y.data(), run.frictionAnchor(0),
+                              run.status().mode);
   EXPECT_EQ(r.regime, c.regime) << joint << " " << c.name;
   EXPECT_GT(r.normal, 0.0) << joint << " " << c.name;
   Eigen::MatrixXd jac;

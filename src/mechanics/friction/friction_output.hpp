@@ -20,7 +20,9 @@ inline double frictionOutput(const model::Model& m, const StateLayout& l,
                              const ConstraintSet* constraints, const ExpressionRunState* run,
                              int friction, int index, const double* y) {
   const FrictionAnchor* anchor = run != nullptr ? run->frictionAnchor(friction) : nullptr;
-  const FrictionResult<double> r = frictionLoads(m, l, constraints, friction, y, anchor);
+  const model::AnalysisMode mode =
+      run != nullptr ? run->status().mode : model::AnalysisStatus{}.mode;
+  const FrictionResult<double> r = frictionLoads(m, l, constraints, friction, y, anchor, mode);
   const FrictionKinematics<double>& k = r.kinematics;
   if (index >= 1 && index <= 3) return r.forceJ[index - 1];
   if (index >= 4 && index <= 6) return r.torqueJ[index - 4];

@@ -240,11 +240,12 @@ struct FrictionResult {
   bool active = false;
 };
 
-// `reads` lends the multipliers (null: no reaction, only the preload acts).
+// `reads` lends the multipliers (null: no reaction, only the preload acts); `mode` is the
+// analysis under way (the run state's, INACTIVE=STATIC).
 template <class T>
 FrictionResult<T> frictionLoads(const model::Model& m, const StateLayout& l,
                                 const ConstraintSet* constraints, int index, const T* y,
-                                const FrictionAnchor* anchor) {
+                                const FrictionAnchor* anchor, model::AnalysisMode mode) {
   const model::Friction& f = m.frictions[index];
   const model::Joint& joint = m.joints[f.joint];
   FrictionResult<T> r;
@@ -254,7 +255,6 @@ FrictionResult<T> frictionLoads(const model::Model& m, const StateLayout& l,
   for (int c = 0; c < 3; ++c) r.forceJ[c] = r.torqueJ[c] = T(0.0);
   r.kinematics = frictionKinematics(m, l, f, y, anchor);
   for (int c = 0; c < 6; ++c) r.mu[c] = T(0.0);
-  const model::AnalysisMode mode = m.analysisStatus.mode;
   if (f.inactiveStatic &&
       (mode == model::AnalysisMode::Statics || mode == model::AnalysisMode::QuasiStatics))
     return r;
