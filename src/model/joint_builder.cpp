@@ -127,6 +127,26 @@ void buildJoint(const Statement& s, Model& model, Diagnostics& diags) {
     a.error(*fr, "inline joint friction (FRICTION=" + fr->values[0].text + ") is not supported",
             "Write a FRICTION statement on this joint instead (docs/theory.md, \"Joint "
             "friction\").");
+  // Without FRICTION=ON the inline friction data have no effect: say so once, naming them,
+  // rather than ignore them silently.
+  if (const Argument* fr = s.find("FRICTION"); !fr || fr->values.empty() ||
+                                               fr->values[0].text == "OFF") {
+    std::string given;
+    for (const Argument& arg : s.args)
+      for (const char* name :
+           {"DELTA_V", "MAXIMUM_DEFORMATION", "MU_DYN_ROT", "MU_STAT_ROT", "MAX_FRIC_ROT",
+            "MU_DYN_TRANS", "MU_STAT_TRANS", "MAX_FRIC_TRANS", "PRELOAD_RADIAL", "PRELOAD_AXIAL",
+            "INNER_RADIUS", "OUTER_RADIUS", "PIN_RADIUS", "BALL_RADIUS", "FRICTION_ARM",
+            "REACTION_ARM", "OVERLAP_DELTA"})
+        if (arg.name == name) given += (given.empty() ? "" : ", ") + arg.name;
+    if (!given.empty())
+      diags.warning(s.where, s.subject(),
+                    "the inline friction data (" + given +
+                        ") have no effect: friction is off without FRICTION=ON, as in ADAMS/View",
+                    "To model joint friction write a FRICTION statement on this joint "
+                    "(docs/theory.md, \"Joint friction\"); remove these arguments to silence "
+                    "this warning.");
+  }
   if (onSamePart(model, j.iMarker, j.jMarker))
     a.error(s.where,
             "I and J markers are on the same part (PART/" +
