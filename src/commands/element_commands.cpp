@@ -260,11 +260,7 @@ bool Session::applyEdits(const language::Statement& c) {
   msg_.line("");
   msg_.line(" The model is reprocessed (ACTIVATE, DEACTIVATE or redefined statements) at time " +
             analysis::formatNumber("%g", state_->t) + ":");
-  for (const auto& l : analysis::modelSummaryLines(*system_, dof)) msg_.line(l);
-  for (int k : dof.removed)
-    context().warning(nullptr, "redundant constraint equation removed: " +
-                                   system_->constraints().describe(k, *model_) +
-                                   " (its reaction is carried by the equations kept)");
+  reportModelSummary(dof);
   return true;
 }
 

@@ -117,12 +117,16 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   const analysis::DegreeOfFreedomCount dof = analysis::countDegreesOfFreedom(*system_, state_->y);
   state_->degreesOfFreedom = dof.degreesOfFreedom;
   state_->grueblerCount = dof.gruebler;
+  reportModelSummary(dof);
+  return true;
+}
+
+void Session::reportModelSummary(const analysis::DegreeOfFreedomCount& dof) {
   for (const auto& l : analysis::modelSummaryLines(*system_, dof)) msg_.line(l);
   for (int k : dof.removed)
     context().warning(nullptr, "redundant constraint equation removed: " +
                                    system_->constraints().describe(k, *model_) +
                                    " (its reaction is carried by the equations kept)");
-  return true;
 }
 
 void Session::stop() {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "analysis/analysis_context.hpp"
+#include "analysis/model_summary.hpp"
 #include "analysis/run_report.hpp"
 #include "analysis/run_state.hpp"
 #include "analysis/save_file.hpp"
@@ -99,6 +100,9 @@ class Session final : private analysis::RunReport {
   void inform(const std::string& text, bool messageFile = true);
   // Reports (and keeps) diagnostics gathered while reading a command.
   void reportAll(const Diagnostics& local);
+  // The model summary and the redundant equations removed, into the .msg (the model as
+  // loaded, and again after every reprocessing).
+  void reportModelSummary(const analysis::DegreeOfFreedomCount& dof);
   void error(const language::Statement& s, const std::string& message, const std::string& hint);
 
   // analysis::RunReport: the .msg, the diagnostics and the .req of the analyses.

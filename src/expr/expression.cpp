@@ -10,13 +10,6 @@
 namespace openmss::expr {
 namespace {
 
-// A subroutine binding waiting for the Program that parse() makes (bindUserFunction).
-struct PendingUser {
-  std::shared_ptr<const UserFunction> function;
-  std::vector<HostCall> dependencies;
-};
-thread_local PendingUser* pendingUser = nullptr;
-
 // The DELAY nodes of a tree by their delayIndex.
 void collectDelays(const SyntaxNode& node, std::vector<const SyntaxNode*>& out) {
   if (node.kind == NodeKind::Delay) {
@@ -71,25 +64,14 @@ bool Expression::parse(const std::string& text, const SourceLocation& where,
                                            compileProgram(parsed.root, hostCount));
   out.program_->setDelayCalls(std::move(delays));
   out.program_->setDataCalls(std::move(parsed.dataCalls));
-  if (parsed.user && pendingUser)
-    out.program_->bindUser(std::move(pendingUser->function), std::move(pendingUser->dependencies));
-  else if (parsed.user)
-    out.program_->setUserCall(std::move(*parsed.user));
+  if (parsed.user) out.program_->setUserCall(std::move(*parsed.user));
   return true;
 }
 
-// parse() is the one place that makes a Program (its header stays free of the binding); the
-// expression is parsed again with the binding handed over on this thread.
 void bindUserFunction(Expression& e, std::shared_ptr<const UserFunction> f,
                       std::vector<HostCall> dependencies) {
   if (!e.userCall()) return;
-  PendingUser pending{std::move(f), std::move(dependencies)};
-  pendingUser = &pending;
-  Diagnostics ignored;  // the text parsed once already
-  Expression bound;
-  const bool ok = Expression::parse(e.text(), SourceLocation{}, "", ignored, bound);
-  pendingUser = nullptr;
-  if (ok) e = std::move(bound);
+  e.program_->bindUser(std::move(f), std::move(dependencies));
 }
 
 const std::string& Expression::text() const {

@@ -61,6 +61,7 @@ struct TimeJet {
 };
 
 class Program;     // the compiled form (private to the module)
+class UserFunction;  // a subroutine behind USER(...) (expr/user_function.hpp)
 class RunContext;  // the run's history that DELAY reads (expr/run_context.hpp)
 
 // Evaluation allocates nothing and keeps no mutable state in the object, so const methods may
@@ -125,6 +126,10 @@ class Expression {
   TimeJet evaluateJet(const TimeJet* hostJets, double time) const;
 
  private:
+  // Binds USER(...) to its subroutine in place (expr/user_function.hpp).
+  friend void bindUserFunction(Expression& e, std::shared_ptr<const UserFunction> f,
+                               std::vector<HostCall> dependencies);
+
   std::unique_ptr<Program> program_;
 };
 

@@ -66,14 +66,6 @@ bool mixedCase(const std::string& n) {
   return true;
 }
 
-template <class Fn>
-Fn* asFunction(void* address) {
-  Fn* f = nullptr;
-  static_assert(sizeof f == sizeof address);
-  std::memcpy(&f, &address, sizeof f);  // POSIX guarantees data and code pointers agree
-  return f;
-}
-
 // FORTRAN-77 argument lists (gfortran: everything by reference, LOGICAL as a 4-byte int).
 using F77WithDflag = void(int* id, double* time, double* par, int* npar, int* dflag, int* iflag,
                           double* result);

@@ -46,14 +46,6 @@ std::string lower(std::string s) {
   return s;
 }
 
-template <class Fn>
-Fn* asFunction(void* address) {
-  Fn* f = nullptr;
-  static_assert(sizeof f == sizeof address);
-  std::memcpy(&f, &address, sizeof f);  // POSIX guarantees data and code pointers agree
-  return f;
-}
-
 class LoadedGse final : public GseRoutines {
  public:
   explicit LoadedGse(const GseDescription& d) : d_(d) {

@@ -4,11 +4,21 @@
 // default library of `openmss run --user-library`, ADAMS's run-user mode), and the POSIX
 // loading of it. Only this module calls dlopen/dlsym.
 
+#include <cstring>
 #include <memory>
 #include <string>
 #include <vector>
 
 namespace openmss::user {
+
+// A symbol's address (Library::symbol) as the function it is.
+template <class Fn>
+Fn* asFunction(void* address) {
+  Fn* f = nullptr;
+  static_assert(sizeof f == sizeof address);
+  std::memcpy(&f, &address, sizeof f);  // POSIX guarantees data and code pointers agree
+  return f;
+}
 
 // ROUTINE=lib::name as ADAMS splits it: "lib::name", "::name" or "name" (default library),
 // "lib::" (default routine name). Either part may come back empty.

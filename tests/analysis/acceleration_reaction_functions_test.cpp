@@ -35,20 +35,7 @@ class DynamicRun : public test::BdfRun {
   DynamicRun(const model::Model& m, double error) : BdfRun(m, error, 0.01, true) {}
 };
 
-// Every nonzero of the dense Newton matrix lies in the structural pattern, and the rows of
-// the new measures are resolved (not made dense).
-void expectPatternCovers(const mechanics::MultibodySystem& s, const Eigen::MatrixXd& jac) {
-  const mechanics::JacobianPattern p = mechanics::newtonMatrixPattern(s);
-  EXPECT_EQ(p.denseRows, 0);
-  Eigen::MatrixXi in = Eigen::MatrixXi::Zero(p.size, p.size);
-  for (int c = 0; c < p.size; ++c)
-    for (int k = p.columnStart[c]; k < p.columnStart[c + 1]; ++k) in(p.rowIndex[k], c) = 1;
-  for (int r = 0; r < p.size; ++r)
-    for (int c = 0; c < p.size; ++c)
-      if (jac(r, c) != 0.0) {
-        EXPECT_EQ(in(r, c), 1) << "entry " << r << ", " << c;
-      }
-}
+using testing::expectPatternCovers;
 
 const double kMass = 2.0, kAdded = 2.0, kStiffness = 8.0, kStart = 0.5;
 

@@ -18,6 +18,7 @@
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
 #include "support/cli_run.hpp"
+#include "support/corpus_decks.hpp"
 #include "support/validation_data.hpp"
 
 namespace {
@@ -27,46 +28,6 @@ using namespace openmss;
 using namespace openmss::testing;  // scratch, run, slurp, write (tests/support)
 
 const fs::path kCorpus = openmss::testing::corpusDir();
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
-
-// The statements the builder rejected (their names), empty when the model is usable.
-std::set<std::string> rejectedStatements(const fs::path& adm) {
-  Diagnostics diags;
-  language::Dataset dataset;
-  language::readDatasetFile(adm.string(), dataset, diags);
-  model::Model m;
-  model::buildModel(dataset, m, diags);
-  std::set<std::string> names;
-  for (const auto& d : diags.all())
-    if (d.severity == Severity::Error)
-      names.insert(d.subject.empty() ? "(reader)" : d.subject.substr(0, d.subject.find('/')));
-  return names;
-}
-
-// The command file's text without carriage returns, and the model name it loads: line 1 of a
-// classic .acf, or FILE/MODEL=name in the newer form.
-std::string modelNameOf(const std::string& acf) {
-  std::vector<std::string> lines;
-  std::string line;
-  for (char c : acf) {
-    if (c == '\n') {
-      lines.push_back(line);
-      line.clear();
-    } else if (c != '\r') {
-      line += c;
-    }
-  }
-  for (const auto& l : lines) {
-    const std::string low = lower(l);
-    if (const auto p = low.find("file/model="); p != std::string::npos) return l.substr(p + 11);
-  }
-  return lines.empty() ? "" : lines[0];
-}
 
 TEST(CorpusSimulation, EverySupportedDataSetSimulatesToItsEnd) {
   if (!fs::exists(kCorpus)) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
@@ -92,8 +53,7 @@ TEST(CorpusSimulation, EverySupportedDataSetSimulatesToItsEnd) {
     std::string commands, how;
     if (fs::exists(acf)) {
       commands = slurp(acf);
-      std::string name = modelNameOf(commands);
-      while (!name.empty() && std::isspace(static_cast<unsigned char>(name.back()))) name.pop_back();
+      const std::string name = modelNameOf(commands);
       fs::copy_file(adm, dir / (fs::path(name).has_extension() ? name : name + ".adm"));
       how = "its own " + acf.filename().string();
     } else {

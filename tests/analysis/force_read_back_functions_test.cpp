@@ -33,23 +33,7 @@ using mechanics::StateLayout;
 
 model::Model build(const std::string& text) { return test::buildModelFromText(text, "rb.adm"); }
 
-// Every nonzero of the dense Newton matrix lies in the structural pattern, which has no dense
-// row (the read-backs' dependencies are resolved). Returns the number of nonzeros checked.
-int expectPatternCovers(const mechanics::MultibodySystem& s, const Eigen::MatrixXd& jac) {
-  const mechanics::JacobianPattern p = mechanics::newtonMatrixPattern(s);
-  EXPECT_EQ(p.denseRows, 0);
-  Eigen::MatrixXi in = Eigen::MatrixXi::Zero(p.size, p.size);
-  for (int c = 0; c < p.size; ++c)
-    for (int k = p.columnStart[c]; k < p.columnStart[c + 1]; ++k) in(p.rowIndex[k], c) = 1;
-  int nonzeros = 0;
-  for (int r = 0; r < p.size; ++r)
-    for (int c = 0; c < p.size; ++c)
-      if (jac(r, c) != 0.0) {
-        ++nonzeros;
-        EXPECT_EQ(in(r, c), 1) << "entry " << r << ", " << c;
-      }
-  return nonzeros;
-}
+using testing::expectPatternCovers;
 
 const std::string kSlider =
     "read-backs\n"

@@ -28,52 +28,14 @@
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
+#include "support/recorded_run.hpp"
 
 namespace openmss {
 namespace {
 
-class RecordingReport final : public analysis::RunReport {
- public:
-  struct Step {
-    double t;
-    std::vector<std::array<double, 6>> rows;
-  };
-  void line(const std::string&) override {}
-  void diagnostic(const Diagnostic& d) override { diagnostics.push_back(d); }
-  bool openRequests() override { return true; }
-  bool requestsWritten() const override { return false; }
-  void writeRequests(double t, const std::vector<std::array<double, 6>>& rows) override {
-    steps.push_back({t, rows});
-  }
-  std::vector<Diagnostic> diagnostics;
-  std::vector<Step> steps;
-};
-
-struct Loaded {
-  model::Model model;
-  std::unique_ptr<mechanics::MultibodySystem> system;
-  std::unique_ptr<analysis::RunState> state;
-  RecordingReport report;
-  analysis::AnalysisContext context() {
-    return analysis::AnalysisContext{model, *system, *state, report};
-  }
-};
-
-std::unique_ptr<Loaded> load(const std::string& text) {
-  auto l = std::make_unique<Loaded>();
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "model.adm", ds, d);
-  EXPECT_TRUE(model::buildModel(ds, l->model, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
-  l->model.output.reqsave = true;
-  l->system = std::make_unique<mechanics::MultibodySystem>(l->model);
-  l->state = std::make_unique<analysis::RunState>(*l->system);
-  const auto dof = analysis::countDegreesOfFreedom(*l->system, l->state->y);
-  l->state->degreesOfFreedom = dof.degreesOfFreedom;
-  l->state->grueblerCount = dof.gruebler;
-  return l;
-}
+using testing::load;
+using testing::Loaded;
+using testing::RecordingReport;
 
 // K(k) = pi / (2 AGM(1, sqrt(1 - k^2))).
 double ellipticK(double k) {

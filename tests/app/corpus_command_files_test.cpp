@@ -17,6 +17,7 @@
 #include "language/schema.hpp"
 #include "model/model_builder.hpp"
 #include "support/cli_run.hpp"
+#include "support/corpus_decks.hpp"
 #include "support/validation_data.hpp"
 
 namespace {
@@ -30,22 +31,6 @@ std::string withoutCarriageReturns(std::string s) {
   return s;
 }
 
-std::string trim(std::string s) {
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.back()))) s.pop_back();
-  while (!s.empty() && std::isspace(static_cast<unsigned char>(s.front()))) s.erase(0, 1);
-  return s;
-}
-
-// The model a command file loads: FILE/MODEL=name, else line 1 (the classic layout).
-std::string modelNameOf(const std::string& acf) {
-  std::string lower = acf;
-  std::transform(lower.begin(), lower.end(), lower.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  if (const auto p = lower.find("file/model="); p != std::string::npos)
-    return trim(acf.substr(p + 11, acf.find('\n', p) - p - 11));
-  return trim(acf.substr(0, acf.find('\n')));
-}
-
 // The corpus keeps files flat as <origin>__<name>.adm: the data set of `acf` is the one with
 // the command file's own base name, else the one that ends in __<model name>.adm.
 fs::path dataSetOf(const fs::path& acf, const std::string& model) {
@@ -57,19 +42,6 @@ fs::path dataSetOf(const fs::path& acf, const std::string& model) {
     if (n.size() > model.size() + 6 && n.ends_with("__" + model + ".adm")) return e.path();
   }
   return {};
-}
-
-std::set<std::string> rejectedStatements(const fs::path& adm) {
-  Diagnostics diags;
-  language::Dataset dataset;
-  language::readDatasetFile(adm.string(), dataset, diags);
-  model::Model m;
-  model::buildModel(dataset, m, diags);
-  std::set<std::string> names;
-  for (const auto& d : diags.all())
-    if (d.severity == Severity::Error)
-      names.insert(d.subject.empty() ? "(reader)" : d.subject.substr(0, d.subject.find('/')));
-  return names;
 }
 
 TEST(CorpusCommandFiles, EveryCommandRunsOrTheDataSetNamesWhatItLacks) {

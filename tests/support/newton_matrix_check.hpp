@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/multibody_system.hpp"
 
 namespace openmss::testing {
@@ -45,6 +46,24 @@ inline double checkNewtonMatrix(const mechanics::MultibodySystem& s, double t,
   }
   if (jacobian) *jacobian = jac;
   return worst;
+}
+
+// Every nonzero of the dense Newton matrix `jac` lies in the structural pattern, and no row of
+// the pattern is dense (every dependency was resolved). Returns the number of nonzeros checked.
+inline int expectPatternCovers(const mechanics::MultibodySystem& s, const Eigen::MatrixXd& jac) {
+  const mechanics::JacobianPattern p = mechanics::newtonMatrixPattern(s);
+  EXPECT_EQ(p.denseRows, 0);
+  Eigen::MatrixXi in = Eigen::MatrixXi::Zero(p.size, p.size);
+  for (int c = 0; c < p.size; ++c)
+    for (int k = p.columnStart[c]; k < p.columnStart[c + 1]; ++k) in(p.rowIndex[k], c) = 1;
+  int nonzeros = 0;
+  for (int r = 0; r < p.size; ++r)
+    for (int c = 0; c < p.size; ++c)
+      if (jac(r, c) != 0.0) {
+        ++nonzeros;
+        EXPECT_EQ(in(r, c), 1) << "entry " << r << ", " << c;
+      }
+  return nonzeros;
 }
 
 }  // namespace openmss::testing
