@@ -91,13 +91,12 @@ int printSummary(const commands::Session& s, bool ok) {
   const model::Model* m = s.model();
   if (!m) return 1;
   std::printf("OpenMSS: %s\n", m->title.c_str());
-  std::printf(
-      "  model:    %d moving parts, %zu joints, %zu motions, %zu force elements, %zu requests; "
-      "%d degrees of freedom (Gruebler count %d)\n",
-      m->bodyCount(), m->joints.size(), m->motions.size(),
-      m->sforces.size() + m->springDampers.size() + m->linearFields.size() +
-          m->vectorForces.size() + m->contacts.size(),
-      m->requests.size(), s.degreesOfFreedom(), s.grueblerDegreesOfFreedom());
+  std::printf("  model:    %d moving parts, %zu joints, %zu motions, %zu force elements, %zu requests; "
+              "%d degrees of freedom (Gruebler count %d)\n",
+              m->bodyCount(), m->joints.size(), m->motions.size(),
+              m->sforces.size() + m->springDampers.size() + m->linearFields.size() +
+                  m->vectorForces.size() + m->contacts.size(),
+              m->requests.size(), s.degreesOfFreedom(), s.grueblerDegreesOfFreedom());
   const auto& r = s.summary();
   if (!r.analysis.empty())
     std::printf("  analysis: %s, reached t = %g with %ld integration steps, %ld output steps\n",
@@ -203,9 +202,9 @@ int check(const std::string& path) {
                   m.vectorForces.size() + m.contacts.size(),
               m.requests.size());
   std::printf("  Gruebler count: %d\n", dof.gruebler);
-  std::printf(
-      "  loops: %d independent, %s dependent\n", dof.loops.independent,
-      dof.loops.enumerated ? std::to_string(dof.loops.dependent).c_str() : "(not enumerated)");
+  std::printf("  loops: %d independent, %s dependent\n", dof.loops.independent,
+              dof.loops.enumerated ? std::to_string(dof.loops.dependent).c_str()
+                                   : "(not enumerated)");
   for (int k : dof.removed)
     std::printf("  redundant: %s\n", system.constraints().describe(k, m).c_str());
   std::printf("DOF %d\n", dof.degreesOfFreedom);
@@ -219,12 +218,9 @@ int eval(int argc, char** argv) {
   bool derivative = false;
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
-    if (a == "--time" && i + 1 < argc)
-      time = std::atof(argv[++i]);
-    else if (a == "--derivative")
-      derivative = true;
-    else if (text.empty())
-      text = a;
+    if (a == "--time" && i + 1 < argc) time = std::atof(argv[++i]);
+    else if (a == "--derivative") derivative = true;
+    else if (text.empty()) text = a;
     else {
       std::fprintf(stderr, "openmss eval: unexpected argument %s\n%s", a.c_str(), kEvalHelp);
       return 64;
@@ -263,10 +259,7 @@ int main(int argc, char** argv) {
   }
   const std::string cmd = argv[1];
   if (cmd == "run") {
-    if (wantsHelp(argc, argv)) {
-      std::printf("%s", kRunHelp);
-      return 0;
-    }
+    if (wantsHelp(argc, argv)) { std::printf("%s", kRunHelp); return 0; }
     std::string file, outdir = ".";
     double end = 1.0, dtout = 0.0;
     long steps = 100;
@@ -280,32 +273,20 @@ int main(int argc, char** argv) {
         }
         return argv[++i];
       };
-      if (a == "--outdir")
-        outdir = next();
-      else if (a == "--end")
-        end = std::atof(next());
-      else if (a == "--steps")
-        steps = std::atol(next());
-      else if (a == "--dtout")
-        dtout = std::atof(next());
-      else if (a == "--quiet")
-        quiet = true;
-      else if (a == "--user-library")
-        user::setDefaultLibrary(fs::absolute(next()).string());
+      if (a == "--outdir") outdir = next();
+      else if (a == "--end") end = std::atof(next());
+      else if (a == "--steps") steps = std::atol(next());
+      else if (a == "--dtout") dtout = std::atof(next());
+      else if (a == "--quiet") quiet = true;
+      else if (a == "--user-library") user::setDefaultLibrary(fs::absolute(next()).string());
       else if (a.starts_with("--")) {
         std::fprintf(stderr, "openmss run: unknown option %s\n%s", a.c_str(), kRunHelp);
         return 64;
-      } else if (file.empty())
-        file = a;
-      else {
-        std::fprintf(stderr, "openmss run: unexpected argument %s\n", a.c_str());
-        return 64;
       }
+      else if (file.empty()) file = a;
+      else { std::fprintf(stderr, "openmss run: unexpected argument %s\n", a.c_str()); return 64; }
     }
-    if (file.empty()) {
-      std::fprintf(stderr, "%s", kRunHelp);
-      return 64;
-    }
+    if (file.empty()) { std::fprintf(stderr, "%s", kRunHelp); return 64; }
     if (!fs::exists(file)) {
       std::fprintf(stderr, "openmss run: %s: no such file\n", file.c_str());
       return 1;
@@ -323,23 +304,14 @@ int main(int argc, char** argv) {
     return status;
   }
   if (cmd == "check") {
-    if (wantsHelp(argc, argv)) {
-      std::printf("%s", kCheckHelp);
-      return 0;
-    }
+    if (wantsHelp(argc, argv)) { std::printf("%s", kCheckHelp); return 0; }
     if (argc == 5 && std::string(argv[3]) == "--user-library")
       user::setDefaultLibrary(fs::absolute(argv[4]).string());
-    else if (argc != 3) {
-      std::fprintf(stderr, "%s", kCheckHelp);
-      return 64;
-    }
+    else if (argc != 3) { std::fprintf(stderr, "%s", kCheckHelp); return 64; }
     return check(argv[2]);
   }
   if (cmd == "eval") {
-    if (wantsHelp(argc, argv)) {
-      std::printf("%s", kEvalHelp);
-      return 0;
-    }
+    if (wantsHelp(argc, argv)) { std::printf("%s", kEvalHelp); return 0; }
     return eval(argc, argv);
   }
   // The machine interface of the Python package (api_command.hpp); not listed in --help.
