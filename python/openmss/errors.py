@@ -1,5 +1,10 @@
 """Exceptions of the openmss package (docs/python.md)."""
 
+import re
+
+# A statement and its id as the solver names them in messages: "PART/2", "SFORCE/7".
+_STATEMENT = re.compile(r"\b([A-Z][A-Z_]*/\d+)\b")
+
 
 class Diagnostic:
     """One diagnostic of the solver: where (file:line:col), the statement and its id, what is
@@ -53,9 +58,11 @@ class InputError(OpenMSSError):
 
 
 class SolverError(OpenMSSError):
-    """An analysis failed. ``time`` is the simulated time reached, ``element`` the statement
-    the solver named ("JOINT/3", "" when none), ``diagnostics`` every diagnostic of the run,
-    and ``run`` the Run with the outputs written up to the failure."""
+    """An analysis failed. ``time`` is the simulated time reached; ``element`` the statement
+    the failure is about: the one the diagnostic names, else the first its message names (the
+    equation with the largest error: "PART/2"), "" when none; ``elements`` every statement the
+    message names (e.g. also the largest applied force, "SFORCE/7"); ``diagnostics`` every
+    diagnostic of the run; ``run`` the Run with the outputs written up to the failure."""
 
     def __init__(self, run, diagnostics):
         self.run = run
@@ -64,7 +71,9 @@ class SolverError(OpenMSSError):
         errors = [d for d in self.diagnostics if d.severity == "error"]
         self.errors = errors
         last = errors[-1] if errors else None
-        self.element = last.statement if last else ""
+        named = _STATEMENT.findall(last.message) if last else []
+        self.elements = ([last.statement] if last and last.statement else []) + named
+        self.element = self.elements[0] if self.elements else ""
         self.file = last.file if last else ""
         self.line = last.line if last else 0
         self.message = last.message if last else "the analysis failed"
