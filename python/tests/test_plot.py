@@ -2,6 +2,7 @@
 the file's data (read back from the Line2D objects, not judged from pixels); the command line
 passes arguments and exit status through (src/app/python_tool.cpp)."""
 
+import os
 import pathlib
 import struct
 import subprocess
@@ -86,3 +87,11 @@ def test_the_command_line_passes_arguments_and_status_through(piston_run, tmp_pa
     assert bad.returncode == 1 and "no REQUEST/99" in bad.stderr
     usage = subprocess.run([str(BINARY), "plot"], capture_output=True, text=True)
     assert usage.returncode == 2 and "--request" in usage.stderr  # argparse's usage status
+
+
+def test_a_missing_interpreter_is_reported_not_ignored(tmp_path):
+    env = dict(os.environ, OPENMSS_PYTHON=str(tmp_path / "no-python"))
+    r = subprocess.run([str(BINARY), "plot", "x.req", "--request", "1", "--component", "2"],
+                       capture_output=True, text=True, env=env)
+    assert r.returncode == 127
+    assert f"cannot run {tmp_path / 'no-python'}" in r.stderr
