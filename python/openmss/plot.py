@@ -11,6 +11,7 @@ import os
 import sys
 
 import matplotlib
+import numpy as np
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
@@ -27,9 +28,10 @@ DPI = 100
 class Series:
     """One component of one request of one file: times, values, name, unit, title, label."""
 
-    def __init__(self, times, values, name, unit, title, label):
+    def __init__(self, times, values, name, unit, title, label, column):
         self.times, self.values = times, values
         self.name, self.unit, self.title, self.label = name, unit, title, label
+        self.column = column  # ADAMS's column number 1..8 (F1..F8)
 
 
 def _column(names, component, eight, path, request):
@@ -69,6 +71,8 @@ def load_series(path, request, component, label=None):
         k = _column(names, component, True, path, request)
         unit = e.components[k].units
         title = f"REQUEST/{request} {e.entity}"
+        # Components left out by CNAMES="" shift the list; with all eight, k is F(k+1).
+        column = k + 1
     else:
         f = read_req(path)
         try:
@@ -80,8 +84,9 @@ def load_series(path, request, component, label=None):
         k = _column(names, component, False, path, request)
         unit = f.unit(request, names[k])
         title = f"REQUEST/{request}" + (f" {entry.comment}" if entry.comment else "")
+        column = components.REQ_COLUMNS[k] + 1
     return Series(frame.index.to_numpy(), frame.iloc[:, k].to_numpy(), names[k], unit, title,
-                  label)
+                  label, column)
 
 
 def plot(result, request, component, vs=None, output=None, label=None, vs_label=None):
@@ -90,7 +95,14 @@ def plot(result, request, component, vs=None, output=None, label=None, vs_label=
     ours = load_series(result, request, component, label)
     series = [ours]
     if vs is not None:
-        series.append(load_series(vs, request, component, vs_label))
+        # The same ADAMS column in the other file, whatever it is named there (a .res names
+        # them x, r1, ...; a .req X, PSI, ...), in the first file's angle unit.
+        other = load_series(vs, request, str(ours.column), vs_label)
+        if (other.unit, ours.unit) == ("rad", "deg"):
+            other.values = np.degrees(other.values)
+        elif (other.unit, ours.unit) == ("deg", "rad"):
+            other.values = np.radians(other.values)
+        series.append(other)
     fig, ax = plt.subplots(figsize=FIGSIZE, dpi=DPI)
     styles = [dict(color="tab:blue", linewidth=1.6), dict(color="tab:red", linestyle="--",
                                                           linewidth=1.2)]

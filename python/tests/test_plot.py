@@ -95,3 +95,16 @@ def test_a_missing_interpreter_is_reported_not_ignored(tmp_path):
                        capture_output=True, text=True, env=env)
     assert r.returncode == 127
     assert f"cannot run {tmp_path / 'no-python'}" in r.stderr
+
+
+def test_vs_matches_the_column_across_res_and_req(piston_run, tmp_path):
+    # piston.res names REQUEST/11's angles r1 r2 r3 (radians); piston.req PSI THETA PHI
+    # (degrees): --vs takes the same ADAMS column (F7) and converts the .req's to radians.
+    _, ax, lines = plot.plot(piston_run.res, 11, "r2", vs=piston_run.req,
+                             output=tmp_path / "x.png")
+    theta = openmss.read_req(piston_run.req).requests[11]["THETA"].to_numpy()
+    assert np.array_equal(lines[1].get_ydata(), np.radians(theta))
+    assert ax.get_ylabel() == "r2 [rad]"
+    # Six printed digits: the two agree to 5e-6 relative (test_res_vs_req.py).
+    assert np.allclose(lines[0].get_ydata(), lines[1].get_ydata(), rtol=5e-6, atol=0)
+    assert len(lines[1].get_ydata()) == 201
