@@ -115,6 +115,37 @@ TEST(ResultsLayout, IdsAreAllocatedByQuantityBlockAsAdamsDoes) {
   EXPECT_EQ(l.components[id("VARIABLE_9", "Q") - 1].units, "");
 }
 
+TEST(ResultsArguments, UnsupportedArgumentsAreNamedWithTheirLine) {
+  language::Dataset ds;
+  Diagnostics d;
+  language::readDatasetText(
+      "m\nRESULTS/XRF, FORMATTED, DECIMALPLACES=6, NOVELOCITIES, COMMENT=run one\n"
+      "REQUEST/3, F2=TIME, CNAMES=Time, CUNITS=\"s\"\nEND\n",
+      "m.adm", ds, d);
+  ASSERT_FALSE(d.hasErrors());
+  const model::ResultsSettings rs = model::readResultsSettings(ds, d);
+  EXPECT_TRUE(rs.enabled);
+  EXPECT_EQ(rs.decimalPlaces, 6);
+  EXPECT_TRUE(rs.noVelocities);
+  EXPECT_EQ(rs.comment, "run one");  // COMMENT takes the rest of the line, as in ADAMS
+  EXPECT_FALSE(rs.noAccelerations);
+  EXPECT_EQ(rs.requestNames.at(3), (std::vector<std::string>{"Time"}));
+  std::string text;
+  for (const auto& x : d.all()) text += format(x) + "\n";
+  EXPECT_NE(text.find("m.adm:2:"), std::string::npos) << text;
+  EXPECT_NE(text.find("FORMATTED"), std::string::npos) << text;
+  EXPECT_NE(text.find("m.adm:3:"), std::string::npos) << text;
+  EXPECT_NE(text.find("CUNITS is not supported"), std::string::npos) << text;
+  EXPECT_EQ(d.all().size(), 2u) << text;
+  EXPECT_FALSE(d.hasErrors());
+
+  language::Dataset bad;
+  Diagnostics e;
+  language::readDatasetText("m\nRESULTS/DECIMALPLACES=18\nEND\n", "m.adm", bad, e);
+  model::readResultsSettings(bad, e);
+  EXPECT_TRUE(e.hasErrors());
+}
+
 // Every structural feature of the ADAMS-written files: Bibliography with a Windows path and a
 // multi-line Comment, two blanks before script=, Environment and Application, a time entity
 // without entType, parts with block-allocated ids, Joint, Single_Component_Force,
