@@ -120,7 +120,9 @@ TEST(ResultsArguments, UnsupportedArgumentsAreNamedWithTheirLine) {
   Diagnostics d;
   language::readDatasetText(
       "m\nRESULTS/XRF, FORMATTED, DECIMALPLACES=6, NOVELOCITIES, COMMENT=run one\n"
-      "REQUEST/3, F2=TIME, CNAMES=Time, CUNITS=\"s\"\nEND\n",
+      "REQUEST/3, F2=TIME, CNAMES=Time, CUNITS=\"s\"\n"
+      // ADAMS/View's padding: empty names past the eighth are dropped without a word.
+      "REQUEST/4, F2=TIME, CNAMES=\"a\",\"\",\"c\",\"d\",\"e\",\"f\",\"g\",\"h\",\"\",\"\"\nEND\n",
       "m.adm", ds, d);
   ASSERT_FALSE(d.hasErrors());
   const model::ResultsSettings rs = model::readResultsSettings(ds, d);
@@ -130,6 +132,8 @@ TEST(ResultsArguments, UnsupportedArgumentsAreNamedWithTheirLine) {
   EXPECT_EQ(rs.comment, "run one");  // COMMENT takes the rest of the line, as in ADAMS
   EXPECT_FALSE(rs.noAccelerations);
   EXPECT_EQ(rs.requestNames.at(3), (std::vector<std::string>{"Time"}));
+  EXPECT_EQ(rs.requestNames.at(4),
+            (std::vector<std::string>{"a", "", "c", "d", "e", "f", "g", "h"}));
   std::string text;
   for (const auto& x : d.all()) text += format(x) + "\n";
   EXPECT_NE(text.find("m.adm:2:"), std::string::npos) << text;
@@ -141,9 +145,16 @@ TEST(ResultsArguments, UnsupportedArgumentsAreNamedWithTheirLine) {
 
   language::Dataset bad;
   Diagnostics e;
-  language::readDatasetText("m\nRESULTS/DECIMALPLACES=18\nEND\n", "m.adm", bad, e);
+  language::readDatasetText(
+      "m\nRESULTS/DECIMALPLACES=18\nREQUEST/5, F2=TIME, "
+      "CNAMES=\"a\",\"b\",\"c\",\"d\",\"e\",\"f\",\"g\",\"h\",\"i\"\nEND\n",
+      "m.adm", bad, e);
   model::readResultsSettings(bad, e);
-  EXPECT_TRUE(e.hasErrors());
+  EXPECT_TRUE(e.hasErrors());  // DECIMALPLACES out of range
+  std::string badText;
+  for (const auto& x : e.all()) badText += format(x) + "\n";
+  EXPECT_NE(badText.find("m.adm:3:"), std::string::npos) << badText;  // the ninth name
+  EXPECT_NE(badText.find("'i' (number 9)"), std::string::npos) << badText;
 }
 
 // Every structural feature of the ADAMS-written files: Bibliography with a Windows path and a
