@@ -24,6 +24,7 @@
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
+#include "model/results_arguments.hpp"
 #include "user/element_routine.hpp"
 #include "user/user_library.hpp"
 
@@ -186,6 +187,7 @@ int check(const std::string& path) {
   bool built = false;
   // Build even after reading errors, so that one pass reports the model-level errors too.
   built = model::buildModel(ds, m, diags);
+  model::readResultsSettings(ds, diags);  // RESULTS and CNAMES diagnostics, as a run gives them
   app::printDiagnostics(diags);
   if (!built || diags.hasErrors()) {
     std::printf("%s: %d error(s), %d warning(s)\n", path.c_str(), diags.errorCount(),

@@ -58,16 +58,21 @@ void applyResultsArguments(const language::Statement& s, ResultsSettings& result
 // CNAMES of one REQUEST; CUNITS, CLABELS and RESULTS_NAME are read but not written, and say so.
 void readRequestNames(const language::Statement& s, ResultsSettings& results, Diagnostics& diags) {
   if (const language::Argument* c = s.find("CNAMES")) {
-    if (c->values.size() > 8) {
-      diags.error(c->where, s.subject(),
-                  "CNAMES gives " + std::to_string(c->values.size()) +
-                      " names for the 8 columns of a request",
-                  "Give at most eight names, \"\" for a column to leave out of the .res.");
-    } else if (s.id) {
-      std::vector<std::string>& names = results.requestNames[*s.id];
-      for (const language::Value& v : c->values)
-        names.push_back(v.written.empty() && !v.quoted ? v.text : v.written);
-    }
+    std::vector<std::string> names;
+    for (const language::Value& v : c->values)
+      names.push_back(v.written.empty() && !v.quoted ? v.text : v.written);
+    // ADAMS/View pads the list with empty names past the eighth (seen in its exports): those
+    // are dropped; a ninth name that is not empty names no column and is said so.
+    for (std::size_t k = 8; k < names.size(); ++k)
+      if (!names[k].empty()) {
+        diags.warning(c->values[k].where, s.subject(),
+                      "CNAMES: a request has 8 columns; the name '" + names[k] + "' (number " +
+                          std::to_string(k + 1) + ") names none and is ignored",
+                      "Give at most eight names.");
+        break;
+      }
+    if (names.size() > 8) names.resize(8);
+    if (s.id) results.requestNames[*s.id] = std::move(names);
   }
   for (const char* name : {"CUNITS", "CLABELS", "RESULTS_NAME"})
     if (const language::Argument* arg = s.find(name))

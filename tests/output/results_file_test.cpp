@@ -294,5 +294,41 @@ TEST(ResultsFile, AFailedRunLeavesAWellFormedFileWithEveryStepBeforeTheFailure) 
   fs::remove_all(dir);
 }
 
+// Each SIMULATE is a data block, numbered per kind across the run; the step types follow.
+TEST(ResultsFile, DataBlocksAreNumberedPerKindAcrossSimulateCommands) {
+  const fs::path dir = scratch("res-blocks");
+  write(dir / "pend.adm",
+        "pendulum\nPART/1, GROUND\nMARKER/10, PART=1\n"
+        "PART/2, MASS=2, CM=20, IP=0.1,0.1,0.1\nMARKER/20, PART=2, QP=1,0,0\n"
+        "MARKER/21, PART=2\nJOINT/1, REVOLUTE, I=21, J=10\nACCGRAV/ JGRAV=-9.81\n"
+        "VARIABLE/3, FUNCTION=2*TIME\nRESULTS/XRF\nEND\n");
+  write(dir / "pend.acf",
+        "pend.adm\nrun\nsimulate/statics\nsimulate/dynamic, end=0.1, dtout=0.05\n"
+        "simulate/dynamic, end=0.2, dtout=0.05\nstop\n");
+  const Result r = run("run pend.acf --quiet", dir);
+  ASSERT_EQ(r.status, 0) << r.output;
+  const ResultsFileData d = readRes(dir / "run.res");
+  EXPECT_EQ(d.runStatus, "Successful");
+  std::vector<std::string> names;
+  long steps = 0;
+  for (const auto& b : d.blocks) {
+    names.push_back(b.name + ":" + std::to_string(b.steps.size()));
+    for (const auto& s : b.steps) {
+      EXPECT_EQ(b.name.substr(0, b.name.find('_')), s.type);
+      ++steps;
+    }
+  }
+  EXPECT_EQ(names, (std::vector<std::string>{"static_001:1", "dynamic_001:2", "dynamic_002:2"}));
+  // VARIABLE/3 = 2 TIME at every step (the algebraic state the file holds, exactly 2t).
+  const auto q = d.componentId("VARIABLE_3", "Q");
+  ASSERT_TRUE(q.has_value());
+  const std::vector<double> time = d.series(1), value = d.series(*q);
+  ASSERT_EQ(time.size(), value.size());
+  for (std::size_t k = 0; k < time.size(); ++k) EXPECT_NEAR(value[k], 2.0 * time[k], 1e-12);
+  EXPECT_EQ(static_cast<long>(time.size()), steps);
+  EXPECT_EQ(steps, 5);
+  fs::remove_all(dir);
+}
+
 }  // namespace
 }  // namespace openmss::output

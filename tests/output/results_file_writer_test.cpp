@@ -115,6 +115,48 @@ TEST(ResultsLayout, IdsAreAllocatedByQuantityBlockAsAdamsDoes) {
   EXPECT_EQ(l.components[id("VARIABLE_9", "Q") - 1].units, "");
 }
 
+TEST(ResultsArguments, UnsupportedArgumentsAreNamedWithTheirLine) {
+  language::Dataset ds;
+  Diagnostics d;
+  language::readDatasetText(
+      "m\nRESULTS/XRF, FORMATTED, DECIMALPLACES=6, NOVELOCITIES, COMMENT=run one\n"
+      "REQUEST/3, F2=TIME, CNAMES=Time, CUNITS=\"s\"\n"
+      // ADAMS/View's padding: empty names past the eighth are dropped without a word.
+      "REQUEST/4, F2=TIME, CNAMES=\"a\",\"\",\"c\",\"d\",\"e\",\"f\",\"g\",\"h\",\"\",\"\"\nEND\n",
+      "m.adm", ds, d);
+  ASSERT_FALSE(d.hasErrors());
+  const model::ResultsSettings rs = model::readResultsSettings(ds, d);
+  EXPECT_TRUE(rs.enabled);
+  EXPECT_EQ(rs.decimalPlaces, 6);
+  EXPECT_TRUE(rs.noVelocities);
+  EXPECT_EQ(rs.comment, "run one");  // COMMENT takes the rest of the line, as in ADAMS
+  EXPECT_FALSE(rs.noAccelerations);
+  EXPECT_EQ(rs.requestNames.at(3), (std::vector<std::string>{"Time"}));
+  EXPECT_EQ(rs.requestNames.at(4),
+            (std::vector<std::string>{"a", "", "c", "d", "e", "f", "g", "h"}));
+  std::string text;
+  for (const auto& x : d.all()) text += format(x) + "\n";
+  EXPECT_NE(text.find("m.adm:2:"), std::string::npos) << text;
+  EXPECT_NE(text.find("FORMATTED"), std::string::npos) << text;
+  EXPECT_NE(text.find("m.adm:3:"), std::string::npos) << text;
+  EXPECT_NE(text.find("CUNITS is not supported"), std::string::npos) << text;
+  EXPECT_EQ(d.all().size(), 2u) << text;
+  EXPECT_FALSE(d.hasErrors());
+
+  language::Dataset bad;
+  Diagnostics e;
+  language::readDatasetText(
+      "m\nRESULTS/DECIMALPLACES=18\nREQUEST/5, F2=TIME, "
+      "CNAMES=\"a\",\"b\",\"c\",\"d\",\"e\",\"f\",\"g\",\"h\",\"i\"\nEND\n",
+      "m.adm", bad, e);
+  model::readResultsSettings(bad, e);
+  EXPECT_TRUE(e.hasErrors());  // DECIMALPLACES out of range
+  std::string badText;
+  for (const auto& x : e.all()) badText += format(x) + "\n";
+  EXPECT_NE(badText.find("m.adm:3:"), std::string::npos) << badText;  // the ninth name
+  EXPECT_NE(badText.find("'i' (number 9)"), std::string::npos) << badText;
+}
+
 // Every structural feature of the ADAMS-written files: Bibliography with a Windows path and a
 // multi-line Comment, two blanks before script=, Environment and Application, a time entity
 // without entType, parts with block-allocated ids, Joint, Single_Component_Force,
