@@ -11,6 +11,7 @@
 #include "model/friction_builder.hpp"
 #include "model/force_read_back_check.hpp"
 #include "model/general_constraint_builder.hpp"
+#include "model/graphics_builder.hpp"
 #include "model/joint_builder.hpp"
 #include "model/material_builder.hpp"
 #include "model/motion_builder.hpp"
@@ -160,7 +161,7 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
                     "(the request file .req is written with OUTPUT/REQSAVE)",
                     "Remove RESULTS to silence this warning.");
     }
-    // GRAPHICS: read and checked by the reader; the solver writes no graphics file yet.
+    // GRAPHICS: built after the markers by buildGraphics (graphics_builder.cpp).
   }
 }
 
@@ -457,6 +458,9 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildGeneralConstraints(groups.gcons, model, diags);
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(groups.forceElements, model, diags);
+  // GRAPHICS (graphics_builder.cpp): checked here, after every marker (errors and the kinds
+  // not drawn); the viewer's scene builds them again for their geometry.
+  (void)buildGraphics(dataset, model, diags);
   // CONTACT (contact_builder.cpp): reads the GRAPHICS solids, after every marker exists.
   buildContacts(groups.contacts, dataset, model, diags);
 
