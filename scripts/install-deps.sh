@@ -12,7 +12,11 @@ packages=(
   gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/element_routines.f)
   libbenchmark-dev       # micro-benchmarks in bench/
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
+  python3 chromium python3-pil  # the viewer's server (viewer/serve.py) and its browser test (tests/viewer)
 )
+# node and npm install three.js for the viewer (viewer/package-lock.json, `npm ci` at configure
+# time): Debian's, only when no node is on the machine.
+command -v node >/dev/null 2>&1 || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do

@@ -16,6 +16,7 @@
 #include "app/command_runner.hpp"
 #include "app/print_diagnostics.hpp"
 #include "app/prompt.hpp"
+#include "app/view_command.hpp"
 #include "commands/session.hpp"
 #include "expr/standalone.hpp"
 #include "language/command_reader.hpp"
@@ -42,6 +43,7 @@ constexpr const char* kMainHelp =
     "  openmss check FILE.adm [--user-library LIB]  read and check a model, print its DOF\n"
     "  openmss check FILE.acf                       check a command file and its model\n"
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
+    "  openmss view RESULT [--model FILE.adm] [--port P]  3-D viewer in the browser\n"
     "  openmss COMMAND --help                       help on one command\n"
     "  openmss --version                            print the version\n"
     "\n"
@@ -309,6 +311,10 @@ int main(int argc, char** argv) {
   if (cmd == "eval") {
     if (wantsHelp(argc, argv)) { std::printf("%s", kEvalHelp); return 0; }
     return eval(argc, argv);
+  }
+  if (cmd == "view") {
+    if (wantsHelp(argc, argv)) { std::printf("%s", app::kViewHelp); return 0; }
+    return app::runView(argc, argv);
   }
   std::fprintf(stderr, "openmss: unknown command '%s'\n%s", cmd.c_str(), kMainHelp);
   return 64;
