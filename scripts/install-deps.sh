@@ -12,7 +12,11 @@ packages=(
   gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/element_routines.f)
   libbenchmark-dev       # micro-benchmarks in bench/
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
-  python3 chromium python3-pil  # the viewer's server (viewer/serve.py) and its browser test (tests/viewer)
+  # The Python package openmss (python/, docs/python.md), run by Debian's /usr/bin/python3,
+  # and its tests; pybind11-dev and python3-dev for its optional in-process extension.
+  python3 python3-numpy python3-pandas python3-matplotlib python3-pytest
+  pybind11-dev python3-dev
+  chromium python3-pil  # the viewer's browser test (tests/viewer): headless Chromium, PNG reading
 )
 # node and npm install three.js for the viewer (viewer/package-lock.json, `npm ci` at configure
 # time): Debian's, only when no node is on the machine.

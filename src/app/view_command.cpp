@@ -2,14 +2,17 @@
 
 #include <unistd.h>
 
+#include <cerrno>
 #include <cstdio>
 #include <cstdlib>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
 #include <vector>
 
 #include "app/print_diagnostics.hpp"
+#include "app/python_tool.hpp"
 #include "language/reader.hpp"
 #include "model/graphics_builder.hpp"
 #include "model/model_builder.hpp"
@@ -148,12 +151,15 @@ int runView(int argc, char** argv) {
   if (!writeScene(o.model, scene)) return 1;
   const std::string server = (viewer / "serve.py").string();
   const std::string result = fs::absolute(o.result).string();
-  std::vector<const char*> args = {"/usr/bin/python3", server.c_str(), "--root",   viewer.c_str(),
-                                   "--scene",          scene.c_str(),  "--result", result.c_str(),
-                                   "--port",           o.port.c_str(), nullptr};
+  // The package's interpreter (app/python_tool.hpp: $OPENMSS_PYTHON, else /usr/bin/python3);
+  // the server needs only its standard library.
+  const std::string python = pythonInterpreter();
+  const std::vector<const char*> args = {python.c_str(), server.c_str(), "--root",   viewer.c_str(),
+                                         "--scene",      scene.c_str(),  "--result", result.c_str(),
+                                         "--port",       o.port.c_str(), nullptr};
   std::fflush(stdout);
   execv(args[0], const_cast<char* const*>(args.data()));
-  std::perror("openmss view: cannot start /usr/bin/python3");
+  std::fprintf(stderr, "openmss view: cannot start %s: %s\n", python.c_str(), std::strerror(errno));
   return 1;
 }
 
