@@ -15,6 +15,8 @@ import argparse
 import functools
 import http.server
 import os
+import shutil
+import signal
 import sys
 
 # The only files served: the page's own, and the two data files under fixed names.
@@ -63,6 +65,8 @@ def main(argv=None):
     p.add_argument("--scene", required=True, help="scene.json written by openmss view")
     p.add_argument("--result", required=True, help="the .res file")
     p.add_argument("--port", type=int, default=0, help="port on 127.0.0.1 (0: a free one)")
+    p.add_argument("--temporary", action="store_true",
+                   help="the scene's folder is temporary: removed when the server stops")
     a = p.parse_args(argv)
     files = {url: os.path.join(a.root, name) for url, name in STATIC.items()}
     files["/scene.json"] = a.scene
@@ -70,10 +74,16 @@ def main(argv=None):
     server = http.server.ThreadingHTTPServer(("127.0.0.1", a.port),
                                              functools.partial(Handler, files))
     print("OpenMSS viewer: http://127.0.0.1:%d/" % server.server_address[1], flush=True)
+    # Ctrl-C and a plain kill both stop the server through the same path.
+    signal.signal(signal.SIGTERM, lambda *_: (_ for _ in ()).throw(KeyboardInterrupt()))
     try:
         server.serve_forever()
     except KeyboardInterrupt:
         pass
+    finally:
+        server.server_close()
+        if a.temporary:
+            shutil.rmtree(os.path.dirname(os.path.abspath(a.scene)), ignore_errors=True)
     return 0
 
 

@@ -154,9 +154,9 @@ int runView(int argc, char** argv) {
   // The package's interpreter (app/python_tool.hpp: $OPENMSS_PYTHON, else /usr/bin/python3);
   // the server needs only its standard library.
   const std::string python = pythonInterpreter();
-  const std::vector<const char*> args = {python.c_str(), server.c_str(), "--root",   viewer.c_str(),
-                                         "--scene",      scene.c_str(),  "--result", result.c_str(),
-                                         "--port",       o.port.c_str(), nullptr};
+  const std::vector<const char*> args = {
+      python.c_str(), server.c_str(), "--root", viewer.c_str(), "--scene",     scene.c_str(),
+      "--result",     result.c_str(), "--port", o.port.c_str(), "--temporary", nullptr};
   std::fflush(stdout);
   execv(args[0], const_cast<char* const*>(args.data()));
   std::fprintf(stderr, "openmss view: cannot start %s: %s\n", python.c_str(), std::strerror(errno));
