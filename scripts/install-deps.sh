@@ -8,6 +8,7 @@ packages=(
   libeigen3-dev          # dense linear algebra in the numerical core
   libsuitesparse-dev     # KLU: sparse LU of large Newton matrices (solvers/klu_linear_solver); SPQR: rank of large constraint Jacobians (mechanics/sparse_constraint_jacobian)
   libsundials-dev        # IDA (DSTIFF) and CVODE's Adams method (ABAM) integrators
+  libxml2-dev            # the results file (.res, XML): output/results_file*.cpp
   libgtest-dev libgmock-dev  # unit and validation tests
   gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/element_routines.f)
   libbenchmark-dev       # micro-benchmarks in bench/

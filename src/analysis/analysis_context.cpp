@@ -2,7 +2,7 @@
 
 #include <cstdio>
 
-#include "analysis/request_values.hpp"
+#include "analysis/output_frame_builder.hpp"
 #include "mechanics/redundancy_check.hpp"
 
 namespace openmss::analysis {
@@ -37,7 +37,7 @@ void AnalysisContext::warning(const RunOrigin* origin, std::string message,
 }
 
 bool AnalysisContext::writeOutputStep(double t, const Eigen::VectorXd& y,
-                                      const Eigen::VectorXd& yp) const {
+                                      const Eigen::VectorXd& yp, output::OutputKind kind) const {
   const model::Model& m = model;
   if (const auto bad = mechanics::violatedRedundantEquation(system, t, y.data(),
                                                             mechanics::redundantTolerance(m))) {
@@ -48,20 +48,31 @@ bool AnalysisContext::writeOutputStep(double t, const Eigen::VectorXd& y,
           "step are written.");
     return false;
   }
-  if (!m.output.reqsave) return true;
-  if (!report.openRequests()) return false;
-  std::vector<std::array<double, 6>> rows;
-  rows.reserve(m.requests.size());
-  constexpr double kDeg = 180.0 / 3.14159265358979323846;
-  for (const auto& r : m.requests) {
-    const auto c = requestColumns(system, r, t, y, yp);
-    std::array<double, 6> row = {c[1], c[2], c[3], c[5], c[6], c[7]};
-    // The request file holds displacement angles in degrees.
-    if (r.kind == model::Request::Kind::Displacement)
-      for (int k = 3; k < 6; ++k) row[k] *= kDeg;
-    rows.push_back(row);
+  const bool frames = report.wantsFrames();
+  if (!m.output.reqsave && !frames) return true;
+  // The request columns are computed once, for the .req and the snapshot alike.
+  OutputFrame frame;
+  frame.kind = kind;
+  fillRequestColumns(system, t, y, yp, frame);
+  if (m.output.reqsave) {
+    if (!report.openRequests()) return false;
+    std::vector<std::array<double, 6>> rows;
+    rows.reserve(m.requests.size());
+    constexpr double kDeg = 180.0 / 3.14159265358979323846;
+    for (std::size_t k = 0; k < m.requests.size(); ++k) {
+      const auto& c = frame.requests[k];
+      std::array<double, 6> row = {c[1], c[2], c[3], c[5], c[6], c[7]};
+      // The request file holds displacement angles in degrees.
+      if (m.requests[k].kind == model::Request::Kind::Displacement)
+        for (int j = 3; j < 6; ++j) row[j] *= kDeg;
+      rows.push_back(row);
+    }
+    report.writeRequests(t, rows);
   }
-  report.writeRequests(t, rows);
+  if (frames) {
+    fillStateOutputs(system, t, y, yp, frame);
+    if (!report.writeFrame(frame)) return false;
+  }
   ++state.summary.outputSteps;
   return true;
 }

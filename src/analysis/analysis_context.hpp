@@ -8,6 +8,7 @@
 #include <string>
 
 #include "analysis/run_report.hpp"
+#include "output/output_frame.hpp"
 #include "analysis/run_state.hpp"
 #include "common/source_location.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -32,11 +33,13 @@ struct AnalysisContext {
   void error(const RunOrigin* origin, std::string message, std::string hint = {}) const;
   void warning(const RunOrigin* origin, std::string message, std::string hint = {}) const;
 
-  // One output step at (t, y, yp): a redundant equation that has come apart stops the run
-  // before the step is written (mechanics/redundancy_check.hpp); otherwise, when the model
-  // writes a request file (OUTPUT/REQSAVE), the request rows go to the report. Every output
-  // step of every analysis passes here.
-  bool writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp) const;
+  // One output step at (t, y, yp) of an analysis of the given kind: a redundant equation that
+  // has come apart stops the run before the step is written (mechanics/redundancy_check.hpp);
+  // otherwise, when the model writes a request file (OUTPUT/REQSAVE), the request rows go to
+  // the report, and when a writer wants it (RESULTS), the whole output snapshot
+  // (output/output_frame.hpp). Every output step of every analysis passes here.
+  bool writeOutputStep(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                       output::OutputKind kind) const;
 };
 
 // printf-style formatting of one number for the message file ("%.6E", "%.3E", "%g").

@@ -111,7 +111,7 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
     if (const SensorEvent* ev = sensors.event()) {
       for (const auto& line : describeSensorEvent(m, *ev, *s.expressions)) run.report.line(line);
       if (ev->print || ev->endsSimulation())
-        if (!run.writeOutputStep(ev->time, ev->y, ev->yp)) return false;
+        if (!run.writeOutputStep(ev->time, ev->y, ev->yp, OutputKind::Dynamic)) return false;
       if (ev->endsSimulation()) {  // the integrator was restarted at the event
         s.t = ev->time;
         s.y = ev->y;
@@ -137,7 +137,7 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
     // Accelerations and reaction forces consistent with the converged positions and
     // velocities (not differenced from the integrator's history).
     mechanics::solveAccelerations(run.system, s.t, yOut, ypOut);
-    if (!run.writeOutputStep(s.t, yOut, ypOut)) return false;
+    if (!run.writeOutputStep(s.t, yOut, ypOut, OutputKind::Dynamic)) return false;
     s.summary.steps = st.steps;
     s.summary.jacobians = st.jacobianEvaluations;
     s.summary.residuals = st.residualEvaluations;

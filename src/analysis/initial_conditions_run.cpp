@@ -211,7 +211,7 @@ bool runInitialConditions(const AnalysisContext& run, const InitialConditionsRun
   }
   ++s.summary.steps;
   s.summary.time = s.t;
-  return run.writeOutputStep(s.t, s.y, s.yp);
+  return run.writeOutputStep(s.t, s.y, s.yp, OutputKind::InitialConditions);
 }
 
 }  // namespace openmss::analysis

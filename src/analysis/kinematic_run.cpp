@@ -85,7 +85,7 @@ bool runKinematics(const AnalysisContext& run, const TransientRun& settings) {
     }
     ++s.summary.steps;
     s.expressions->accept(run.system, s.t, s.y, s.yp);  // each output is an accepted state
-    if (!run.writeOutputStep(s.t, s.y, s.yp)) return false;
+    if (!run.writeOutputStep(s.t, s.y, s.yp, OutputKind::Kinematic)) return false;
     run.report.progress(s.t, t0, end, s.summary.steps);
   }
   endTransient(run);

@@ -83,7 +83,7 @@ bool staticEquilibriumAt(const AnalysisContext& run, double t) {
   s.yp = Eigen::VectorXd::Zero(s.y.size());
   ++s.summary.steps;
   // Outputs: positions and reactions of the equilibrium, zero velocities and accelerations.
-  return run.writeOutputStep(s.t, s.y, s.yp);
+  return run.writeOutputStep(s.t, s.y, s.yp, OutputKind::Static);
 }
 
 }  // namespace

@@ -60,7 +60,7 @@ bool beginTransient(const AnalysisContext& run, bool kinematic) {
     if (!solveInitialConditions(run)) return false;
     s.expressions->accept(run.system, s.t, s.y, s.yp);
     enterAnalysisMode();
-    if (!run.writeOutputStep(s.t, s.y, s.yp)) return false;
+    if (!run.writeOutputStep(s.t, s.y, s.yp, OutputKind::InitialConditions)) return false;
   }
   enterAnalysisMode();
   run.report.line("");

@@ -27,10 +27,13 @@ double steadySeconds() {
 }  // namespace
 
 Session::Session(SessionOptions options) : options_(std::move(options)) {}
-Session::~Session() = default;
+Session::~Session() { closeResults(); }
 
 std::string Session::requestFilePath() const {
   return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".req")).string();
+}
+std::string Session::resultsFilePath() const {
+  return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".res")).string();
 }
 std::string Session::messageFilePath() const {
   return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".msg")).string();
@@ -71,6 +74,8 @@ void Session::echoCommand(const std::string& text) {
 }
 
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
+  closeResults();  // the previous model's .res (the map is the model's)
+  resFailed_ = false;
   prefix_ = outputPrefix;
   if (!options_.checkOnly) std::filesystem::create_directories(options_.outputDirectory);
   if (!options_.checkOnly && !msg_.open(messageFilePath())) {
@@ -99,6 +104,7 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   editsPending_ = false;
   model_ = std::make_unique<model::Model>();
   model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
+  results_ = model::readResultsSettings(dataset, readDiags);  // the .res (RESULTS, CNAMES)
   reportAll(readDiags);
   msg_.line("");
   msg_.line(" Model title: " + dataset.title);
@@ -134,6 +140,7 @@ void Session::stop() {
   msg_.line("");
   msg_.line(" Finished -----");
   req_.close();
+  closeResults();
 }
 
 bool Session::execute(const language::Statement& c) {
@@ -181,11 +188,18 @@ bool Session::simulate(const language::Statement& c) {
     return true;
   }
   const analysis::AnalysisContext run = context();
+  res_.beginAnalysis();  // each SIMULATE is a new <Data> block of the .res
+  bool ok = false;
   if (const auto* ic = std::get_if<analysis::InitialConditionsRun>(&*request))
-    return analysis::runInitialConditions(run, *ic);
-  if (const auto* statics = std::get_if<analysis::StaticsRun>(&*request))
-    return analysis::runStatics(run, *statics);
-  if (!analysis::runTransient(run, std::get<analysis::TransientRun>(*request))) return false;
+    ok = analysis::runInitialConditions(run, *ic);
+  else if (const auto* statics = std::get_if<analysis::StaticsRun>(&*request))
+    ok = analysis::runStatics(run, *statics);
+  else
+    ok = analysis::runTransient(run, std::get<analysis::TransientRun>(*request));
+  if (!ok) {
+    res_.markFailed();  // TerminationStatus runStatus="Failed" (every step so far is kept)
+    return false;
+  }
   if (state_->halted) stop();  // SENSOR/HALT ends the run as STOP does
   return true;
 }
@@ -226,6 +240,36 @@ bool Session::openRequests() {
 
 void Session::writeRequests(double t, const std::vector<std::array<double, 6>>& rows) {
   req_.writeStep(t, rows);
+}
+
+bool Session::wantsFrames() const {
+  return model_ && results_.enabled && !options_.checkOnly && !resFailed_;
+}
+
+bool Session::writeFrame(const analysis::OutputFrame& frame) {
+  if (!res_.isOpen()) {
+    output::ResultsFileHeader h;
+    h.analysisName = prefix_;
+    h.version = OPENMSS_VERSION;
+    h.stamp = output::RequestFileHeader{}.stamp;  // the .req's fixed stamp (docs)
+    std::string err;
+    if (!res_.open(resultsFilePath(), *model_, results_, h, &err)) {
+      resFailed_ = true;
+      context().error(nullptr, err, "Check that the output directory is writable.");
+      return false;
+    }
+  }
+  if (res_.writeStep(frame)) return true;
+  resFailed_ = true;
+  context().error(nullptr, res_.error(), "The steps before this one are in the file.");
+  closeResults();
+  return false;
+}
+
+void Session::closeResults() {
+  if (!res_.isOpen()) return;
+  if (resFailed_) res_.markFailed();
+  res_.close();
 }
 
 void Session::progressStart() { progressStart_ = progressLast_ = steadySeconds(); }

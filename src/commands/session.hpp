@@ -19,8 +19,10 @@
 #include "language/dataset.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model.hpp"
+#include "model/results_arguments.hpp"
 #include "output/message_log.hpp"
 #include "output/request_file.hpp"
+#include "output/results_file.hpp"
 
 namespace openmss::commands {
 
@@ -55,6 +57,7 @@ class Session final : private analysis::RunReport {
   const mechanics::MultibodySystem* system() const { return system_.get(); }
   std::string requestFilePath() const;
   std::string messageFilePath() const;
+  std::string resultsFilePath() const;
   int degreesOfFreedom() const { return state_ ? state_->degreesOfFreedom : 0; }
   int grueblerDegreesOfFreedom() const { return state_ ? state_->grueblerCount : 0; }
 
@@ -111,6 +114,11 @@ class Session final : private analysis::RunReport {
   bool openRequests() override;
   bool requestsWritten() const override { return req_.isOpen(); }
   void writeRequests(double t, const std::vector<std::array<double, 6>>& rows) override;
+  // The .res of a RESULTS statement (output/results_file.hpp): opened at the first step,
+  // closed (valid XML, with the run's status) by STOP, a new model or the destructor.
+  bool wantsFrames() const override;
+  bool writeFrame(const analysis::OutputFrame& frame) override;
+  void closeResults();
   void progressStart() override;
   void progress(double t, double t0, double end, long steps) override;
   void progressDone() override;
@@ -119,6 +127,9 @@ class Session final : private analysis::RunReport {
   Diagnostics diags_;
   output::MessageLog msg_;
   output::RequestFileWriter req_;
+  output::ResultsFileWriter res_;
+  model::ResultsSettings results_;  // RESULTS and CNAMES of the data set (results_arguments.hpp)
+  bool resFailed_ = false;  // the .res could not be written: not tried again for this model
   std::string prefix_;
   language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
   ModelEdits pendingEdits_;    // as the commands so far leave the model

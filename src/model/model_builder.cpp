@@ -54,7 +54,7 @@ const std::set<std::string>& supportedStatements() {
                                           "SENSOR",
                                           // 3-D contact (contact_builder.cpp)
                                           "CONTACT",
-                                          // results-file request: warns (no .res writer yet)
+                                          // the .res file (results_arguments.cpp)
                                           "RESULTS",
                                           // integrator choice (analysis_settings.cpp)
                                           "INTEGRATOR",
@@ -155,12 +155,9 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       applySolverPreferences(s, diags);
     } else if (s.name == "OUTPUT") {
       applyOutputArguments(s, model.output, diags);
-    } else if (s.name == "RESULTS") {  // like OUTPUT/GRSAVE: a file request, not the model's
-      diags.warning(s.where, s.subject(),
-                    "the results (.res) file is not written yet; the run goes on without it "
-                    "(the request file .req is written with OUTPUT/REQSAVE)",
-                    "Remove RESULTS to silence this warning.");
     }
+    // RESULTS (and REQUEST's CNAMES): read for the .res writer by readResultsSettings
+    // (results_arguments.hpp), not part of the model.
     // GRAPHICS: built after the markers by buildGraphics (graphics_builder.cpp).
   }
 }
