@@ -86,10 +86,8 @@ void applyOutputArguments(const Statement& s, OutputSettings& output, Diagnostic
       output.noseparator = true;
     else if (arg.name == "SEPARATOR")
       output.noseparator = false;
-    else if (arg.name == "GRSAVE")
-      diags.warning(arg.where, s.subject(),
-                    "GRSAVE: the graphics file is not written yet; the run goes on without it",
-                    "Remove GRSAVE to silence this warning.");
+    else if (arg.name == "GRSAVE")  // <prefix>.gra (docs/output-files.md)
+      output.grsave = true;
     else
       diags.warning(arg.where, s.subject(),
                     arg.name + " is not supported yet and has no effect on this run",

@@ -61,11 +61,11 @@ bool GraphicsFileWriter::open(const std::string& path, const RequestFileHeader& 
   std::fprintf(file_, "%s\n", padded(header.title, 80).c_str());
   // Counts: parts, markers, 0, 0, graphics, 0, 0, 0, moving parts (docs/output-files.md).
   movingParts_ = 0;
-  for (const model::Part& p : model.parts) movingParts_ += p.ground ? 0 : 1;
+  for (const model::Part& p : model.parts) movingParts_ += p.body >= 0 ? 1 : 0;
   std::fprintf(file_, "%6zu%5zu%5d%5d%5zu%5d%5d%5d%5zu\n", model.parts.size(), markers.size(), 0, 0,
                graphics.size(), 0, 0, 0, movingParts_);
   for (const model::Part& p : model.parts)
-    std::fprintf(file_, "%11ld%10d\n", p.id, p.ground ? 0 : 1);
+    std::fprintf(file_, "%11ld%10d\n", p.id, p.body >= 0 ? 1 : 0);
   for (const model::Graphic& g : graphics)
     std::fprintf(file_, "%11ld%10d%10ld\n", g.id, graphicsKindCode(g.kind),
                  g.marker >= 0 ? model.markers[g.marker].id : 0L);
