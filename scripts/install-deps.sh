@@ -17,7 +17,11 @@ packages=(
   # and its tests; pybind11-dev and python3-dev for its optional in-process extension.
   python3 python3-numpy python3-pandas python3-matplotlib python3-pytest
   pybind11-dev python3-dev
+  chromium python3-pil  # the viewer's browser test (tests/viewer): headless Chromium, PNG reading
 )
+# node and npm install three.js for the viewer (viewer/package-lock.json, `npm ci` at configure
+# time): Debian's, only when no node is on the machine.
+command -v node >/dev/null 2>&1 || packages+=(nodejs npm)
 
 missing=()
 for p in "${packages[@]}"; do

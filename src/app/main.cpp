@@ -18,6 +18,7 @@
 #include "app/print_diagnostics.hpp"
 #include "app/prompt.hpp"
 #include "app/python_tool.hpp"
+#include "app/view_command.hpp"
 #include "commands/session.hpp"
 #include "expr/standalone.hpp"
 #include "language/command_reader.hpp"
@@ -47,6 +48,7 @@ constexpr const char* kMainHelp =
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
     "  openmss plot RESULT --request ID --component N [--vs OTHER] [-o OUT.png]\n"
     "                                               plot a request of a .req or .res (Python)\n"
+    "  openmss view RESULT [--model FILE.adm] [--port P]  3-D viewer in the browser\n"
     "  openmss COMMAND --help                       help on one command\n"
     "  openmss --version                            print the version\n"
     "\n"
@@ -321,6 +323,10 @@ int main(int argc, char** argv) {
   // Tools of the Python package (docs/python.md): arguments and exit status pass through.
   if (cmd == "plot")
     return app::runPythonTool(cmd, std::vector<std::string>(argv + 2, argv + argc));
+  if (cmd == "view") {
+    if (wantsHelp(argc, argv)) { std::printf("%s", app::kViewHelp); return 0; }
+    return app::runView(argc, argv);
+  }
   std::fprintf(stderr, "openmss: unknown command '%s'\n%s", cmd.c_str(), kMainHelp);
   return 64;
 }

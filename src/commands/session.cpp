@@ -14,6 +14,7 @@
 #include "commands/save_reload_command.hpp"
 #include "commands/simulate_command.hpp"
 #include "language/reader.hpp"
+#include "model/graphics_builder.hpp"
 #include "model/model_builder.hpp"
 #include "output/request_header.hpp"
 
@@ -76,6 +77,7 @@ void Session::echoCommand(const std::string& text) {
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
   closeResults();  // the previous model's .res (the map is the model's)
   resFailed_ = false;
+  graFailed_ = false;
   prefix_ = outputPrefix;
   if (!options_.checkOnly) std::filesystem::create_directories(options_.outputDirectory);
   if (!options_.checkOnly && !msg_.open(messageFilePath())) {
@@ -103,7 +105,7 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   pendingEdits_ = appliedEdits_ = ModelEdits{};
   editsPending_ = false;
   model_ = std::make_unique<model::Model>();
-  model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
+  model::buildModel(dataset, *model_, readDiags);             // model checks even after read errors
   results_ = model::readResultsSettings(dataset, readDiags);  // the .res (RESULTS, CNAMES)
   reportAll(readDiags);
   msg_.line("");
@@ -243,10 +245,38 @@ void Session::writeRequests(double t, const std::vector<std::array<double, 6>>& 
 }
 
 bool Session::wantsFrames() const {
-  return model_ && results_.enabled && !options_.checkOnly && !resFailed_;
+  return model_ && !options_.checkOnly &&
+         ((results_.enabled && !resFailed_) || (model_->output.grsave && !graFailed_));
+}
+
+// The .gra of OUTPUT/GRSAVE: opened at the first frame with the data set's drawn GRAPHICS.
+bool Session::writeGraphicsFrame(const analysis::OutputFrame& frame) {
+  if (!gra_.isOpen()) {
+    const std::string path =
+        (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".gra")).string();
+    Diagnostics checked;  // the model build reported them already
+    const std::vector<model::Graphic> graphics = model::buildGraphics(dataset_, *model_, checked);
+    std::string err;
+    if (!gra_.open(path, output::requestFileHeader(*model_, nullptr), *model_, graphics, &err)) {
+      graFailed_ = true;
+      context().error(nullptr, err, "Check that the output directory is writable.");
+      return false;
+    }
+  }
+  std::vector<output::GraphicsPose> poses;
+  for (const output::PartOutput& p : frame.parts) poses.push_back({p.position, p.angles});
+  gra_.writeStep(frame.time, poses);
+  if (gra_.error().empty()) return true;
+  graFailed_ = true;
+  context().error(nullptr, "graphics file: " + gra_.error(),
+                  "The steps before this one are in it.");
+  gra_.close();
+  return false;
 }
 
 bool Session::writeFrame(const analysis::OutputFrame& frame) {
+  if (model_->output.grsave && !graFailed_ && !writeGraphicsFrame(frame)) return false;
+  if (!results_.enabled || resFailed_) return true;
   if (!res_.isOpen()) {
     output::ResultsFileHeader h;
     h.analysisName = prefix_;
@@ -267,6 +297,7 @@ bool Session::writeFrame(const analysis::OutputFrame& frame) {
 }
 
 void Session::closeResults() {
+  gra_.close();
   if (!res_.isOpen()) return;
   if (resFailed_) res_.markFailed();
   res_.close();

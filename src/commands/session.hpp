@@ -20,6 +20,7 @@
 #include "mechanics/multibody_system.hpp"
 #include "model/model.hpp"
 #include "model/results_arguments.hpp"
+#include "output/graphics_file.hpp"
 #include "output/message_log.hpp"
 #include "output/request_file.hpp"
 #include "output/results_file.hpp"
@@ -129,7 +130,11 @@ class Session final : private analysis::RunReport {
   output::RequestFileWriter req_;
   output::ResultsFileWriter res_;
   model::ResultsSettings results_;  // RESULTS and CNAMES of the data set (results_arguments.hpp)
-  bool resFailed_ = false;  // the .res could not be written: not tried again for this model
+  bool resFailed_ = false;          // the .res could not be written: not tried again for this model
+  // The .gra of OUTPUT/GRSAVE (output/graphics_file.hpp), written from the same frames.
+  output::GraphicsFileWriter gra_;
+  bool graFailed_ = false;
+  bool writeGraphicsFrame(const analysis::OutputFrame& frame);
   std::string prefix_;
   language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
   ModelEdits pendingEdits_;    // as the commands so far leave the model

@@ -4,6 +4,7 @@
 #include <filesystem>
 #include <map>
 
+#include "model/graphics_builder.hpp"
 #include "model/statement_arguments.hpp"
 
 namespace openmss::model {
@@ -12,43 +13,6 @@ namespace {
 using language::Argument;
 using language::Statement;
 
-std::string graphicsKind(const Statement& g) {
-  for (const char* kind : {"ELLIPSOID", "BOX", "CYLINDER", "FRUSTUM", "TORUS", "EXTERNAL", "PLANE",
-                           "ARC", "CIRCLE", "CURVE", "POINT", "SPDP", "FORCE"})
-    if (g.has(kind)) return kind;
-  if (g.has("OUTLINE")) return "OUTLINE";
-  return "";
-}
-
-std::string at(const Statement& g) {
-  return g.subject() + " (line " + std::to_string(g.where.line) + ")";
-}
-
-// The reference marker of a solid (CM= or CORNER=), as an index; -1 after a diagnostic.
-int referenceMarker(const Statement& g, const char* name, const Model& model,
-                    const SourceLocation& where, const std::string& subject, Diagnostics& diags) {
-  const Argument* a = g.find(name);
-  if (!a || a->values.empty()) {
-    diags.error(where, subject, at(g) + " has no " + name + "= marker to place its solid",
-                std::string("Add ") + name + "=<marker id> to " + g.subject() + ".");
-    return -1;
-  }
-  const long id = static_cast<long>(a->values[0].number);
-  const auto it = model.markerIndex.find(id);
-  if (it == model.markerIndex.end()) {
-    diags.error(a->where, g.subject(),
-                std::string(name) + "=" + std::to_string(id) + " names no marker",
-                "Use the id of a MARKER statement of this data set.");
-    return -1;
-  }
-  return it->second;
-}
-
-double number(const Statement& g, const char* name) {
-  const Argument* a = g.find(name);
-  return a && !a->values.empty() ? a->values[0].number : 0.0;
-}
-
 // One GRAPHICS solid for a CONTACT; false after a diagnostic at `where` (the IGEOM/JGEOM value).
 bool readSolid(const Statement& g, const Model& model, const SourceLocation& where,
                const std::string& subject, Diagnostics& diags, ContactSolid& out) {
@@ -56,10 +20,11 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
   out.graphicsId = g.id.value_or(0);
   out.where = g.where;
   if (kind == "ELLIPSOID") {
-    const double x = number(g, "XSCALE"), y = number(g, "YSCALE"), z = number(g, "ZSCALE");
+    const double x = graphicsNumber(g, "XSCALE"), y = graphicsNumber(g, "YSCALE"),
+                 z = graphicsNumber(g, "ZSCALE");
     if (!(x > 0.0) || x != y || x != z) {
       diags.error(where, subject,
-                  at(g) + " is an ELLIPSOID with scales " + std::to_string(x) + ", " +
+                  graphicsAt(g) + " is an ELLIPSOID with scales " + std::to_string(x) + ", " +
                       std::to_string(y) + ", " + std::to_string(z) +
                       ": only spheres (three equal positive scales) are supported as contact "
                       "geometry so far",
@@ -70,17 +35,18 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
     out.shape = ContactSolid::Shape::Sphere;
     out.size = Eigen::Vector3d(0.5 * x, 0.0, 0.0);
     out.boundingRadius = 0.5 * x;
-    out.marker = referenceMarker(g, "CM", model, where, subject, diags);
+    out.marker = graphicsMarker(g, "CM", model, where, subject, diags);
   } else if (kind == "BOX") {
     out.shape = ContactSolid::Shape::Box;
-    out.size = Eigen::Vector3d(number(g, "X"), number(g, "Y"), number(g, "Z"));
+    out.size =
+        Eigen::Vector3d(graphicsNumber(g, "X"), graphicsNumber(g, "Y"), graphicsNumber(g, "Z"));
     if (out.size.cwiseAbs().minCoeff() == 0.0) {
-      diags.error(where, subject, at(g) + " is a BOX with a zero extent: it has no volume",
+      diags.error(where, subject, graphicsAt(g) + " is a BOX with a zero extent: it has no volume",
                   "Give X, Y and Z all different from 0.");
       return false;
     }
     out.boundingRadius = out.size.norm();
-    out.marker = referenceMarker(g, "CORNER", model, where, subject, diags);
+    out.marker = graphicsMarker(g, "CORNER", model, where, subject, diags);
   } else if (kind == "EXTERNAL") {
     const Argument* f = g.find("FILE");
     const std::string file = f && !f->values.empty() ? f->values[0].written : "";
@@ -88,24 +54,26 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
         std::filesystem::path(model.file).parent_path() / std::filesystem::path(file);
     if (file.empty() || !std::filesystem::exists(path)) {
       diags.error(where, subject,
-                  at(g) + " reads its shell from the file '" + file + "', which is missing (" +
-                      path.string() + ")",
+                  graphicsAt(g) + " reads its shell from the file '" + file +
+                      "', which is missing (" + path.string() + ")",
                   "Put the file next to the data set, or replace the EXTERNAL geometry by "
                   "ELLIPSOID or BOX solids.");
     } else {
       diags.error(where, subject,
-                  at(g) + " is an EXTERNAL shell (" + file +
+                  graphicsAt(g) + " is an EXTERNAL shell (" + file +
                       "): shell and Parasolid files are not read yet",
                   "Replace it by ELLIPSOID (sphere) or BOX solids.");
     }
     return false;
   } else if (kind == "CYLINDER" || kind == "FRUSTUM" || kind == "TORUS" || kind == "PLANE") {
-    diags.error(where, subject, at(g) + " is a " + kind + ": contact with it is not supported yet",
+    diags.error(where, subject,
+                graphicsAt(g) + " is a " + kind + ": contact with it is not supported yet",
                 "Use ELLIPSOID (sphere) or BOX solids; a floor is a large BOX.");
     return false;
   } else {
     diags.error(where, subject,
-                at(g) + " is " + (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
+                graphicsAt(g) + " is " +
+                    (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
                     ": CONTACT needs solids (a volume)",
                 "Name ELLIPSOID (sphere) or BOX GRAPHICS in IGEOM and JGEOM.");
     return false;

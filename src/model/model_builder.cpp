@@ -11,6 +11,7 @@
 #include "model/friction_builder.hpp"
 #include "model/force_read_back_check.hpp"
 #include "model/general_constraint_builder.hpp"
+#include "model/graphics_builder.hpp"
 #include "model/joint_builder.hpp"
 #include "model/material_builder.hpp"
 #include "model/motion_builder.hpp"
@@ -85,10 +86,8 @@ void applyOutputArguments(const Statement& s, OutputSettings& output, Diagnostic
       output.noseparator = true;
     else if (arg.name == "SEPARATOR")
       output.noseparator = false;
-    else if (arg.name == "GRSAVE")
-      diags.warning(arg.where, s.subject(),
-                    "GRSAVE: the graphics file is not written yet; the run goes on without it",
-                    "Remove GRSAVE to silence this warning.");
+    else if (arg.name == "GRSAVE")  // <prefix>.gra (docs/output-files.md)
+      output.grsave = true;
     else
       diags.warning(arg.where, s.subject(),
                     arg.name + " is not supported yet and has no effect on this run",
@@ -157,7 +156,7 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
     }
     // RESULTS (and REQUEST's CNAMES): read for the .res writer by readResultsSettings
     // (results_arguments.hpp), not part of the model.
-    // GRAPHICS: read and checked by the reader; the solver writes no graphics file yet.
+    // GRAPHICS: built after the markers by buildGraphics (graphics_builder.cpp).
   }
 }
 
@@ -454,6 +453,9 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildGeneralConstraints(groups.gcons, model, diags);
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(groups.forceElements, model, diags);
+  // GRAPHICS (graphics_builder.cpp): checked here, after every marker (errors and the kinds
+  // not drawn); the viewer's scene builds them again for their geometry.
+  (void)buildGraphics(dataset, model, diags);
   // CONTACT (contact_builder.cpp): reads the GRAPHICS solids, after every marker exists.
   buildContacts(groups.contacts, dataset, model, diags);
 

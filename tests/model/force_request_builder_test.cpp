@@ -170,19 +170,18 @@ TEST(UnitsAndGravity, GravityOutputAndUnitErrors) {
       "settings\n"
       "UNITS/FORCE=NEWTON, MASS=KILOGRAM\n"  // 2: two of four
       "ACCGRAV/JGRAV=-9.80665\n"
-      "OUTPUT/REQSAVE, NOSEPARATOR, GRSAVE\n"  // 4: GRSAVE warns
+      "OUTPUT/REQSAVE, NOSEPARATOR, GRSAVE\n"  // 4: GRSAVE asks for the .gra
       "PART/1, GROUND\n"
       "END\n");
   EXPECT_FALSE(b.ok);
   EXPECT_EQ(b.model.gravity, Eigen::Vector3d(0, -9.80665, 0));
   EXPECT_TRUE(b.model.output.reqsave);
   EXPECT_TRUE(b.model.output.noseparator);
+  EXPECT_TRUE(b.model.output.grsave);
   EXPECT_EQ(b.messages(),
             (std::vector<std::string>{
                 "f.adm:2:1: error: UNITS: FORCE, MASS, LENGTH and TIME must be given together. "
-                "Give all four, or SYSTEM=, or UCF=.",
-                "f.adm:4:30: warning: OUTPUT: GRSAVE: the graphics file is not written yet; the "
-                "run goes on without it. Remove GRSAVE to silence this warning."}));
+                "Give all four, or SYSTEM=, or UCF=."}));
 }
 
 }  // namespace
