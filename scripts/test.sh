@@ -8,6 +8,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install-deps.sh"
 "$root/scripts/build.sh"
+"$root/scripts/install-python-path.sh"  # import openmss from any folder (docs/python.md)
 cd "$root/build"
 log=$(mktemp)
 trap 'rm -f "$log"' EXIT

@@ -13,9 +13,11 @@
 #include <vector>
 
 #include "analysis/model_summary.hpp"
+#include "app/api_command.hpp"
 #include "app/command_runner.hpp"
 #include "app/print_diagnostics.hpp"
 #include "app/prompt.hpp"
+#include "app/python_tool.hpp"
 #include "commands/session.hpp"
 #include "expr/standalone.hpp"
 #include "language/command_reader.hpp"
@@ -44,6 +46,8 @@ constexpr const char* kMainHelp =
     "  openmss check FILE.adm [--user-library LIB]  read and check a model, print its DOF\n"
     "  openmss check FILE.acf                       check a command file and its model\n"
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
+    "  openmss plot RESULT --request ID --component N [--vs OTHER] [-o OUT.png]\n"
+    "                                               plot a request of a .req or .res (Python)\n"
     "  openmss COMMAND --help                       help on one command\n"
     "  openmss --version                            print the version\n"
     "\n"
@@ -321,6 +325,11 @@ int main(int argc, char** argv) {
     if (wantsHelp(argc, argv)) { std::printf("%s", kEvalHelp); return 0; }
     return eval(argc, argv);
   }
+  // The machine interface of the Python package (api_command.hpp); not listed in --help.
+  if (cmd == "api") return app::apiCommand(argc, argv);
+  // Tools of the Python package (docs/python.md): arguments and exit status pass through.
+  if (cmd == "plot")
+    return app::runPythonTool(cmd, std::vector<std::string>(argv + 2, argv + argc));
   std::fprintf(stderr, "openmss: unknown command '%s'\n%s", cmd.c_str(), kMainHelp);
   return 64;
 }

@@ -18,7 +18,9 @@ set(allowed_solvers "common")
 set(allowed_output "model;expr;user;common")
 set(allowed_analysis "output;solvers;mechanics;model;expr;user;common")
 set(allowed_commands "analysis;output;solvers;mechanics;model;language;expr;user;common")
-set(layers common language expr user model mechanics solvers output analysis commands)
+# api (the embeddable API of the Python package) runs command files with app's CommandRunner.
+set(allowed_api "app;commands;analysis;output;solvers;mechanics;model;language;expr;user;common")
+set(layers common language expr user model mechanics solvers output analysis commands api)
 
 if(NOT SOURCE_DIR)
   message(FATAL_ERROR "check_layering: pass -DSOURCE_DIR=<directory holding src/>")
