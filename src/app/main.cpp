@@ -48,6 +48,9 @@ constexpr const char* kMainHelp =
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
     "  openmss plot RESULT --request ID --component N [--vs OTHER] [-o OUT.png]\n"
     "                                               plot a request of a .req or .res (Python)\n"
+    "  openmss study run STUDY.yaml [--scheduler ADDRESS] [--workers N] [--out DIR]\n"
+    "                                               a design study on Dask (Python,\n"
+    "                                               docs/studies.md)\n"
     "  openmss COMMAND --help                       help on one command\n"
     "  openmss --version                            print the version\n"
     "\n"
@@ -328,7 +331,7 @@ int main(int argc, char** argv) {
   // The machine interface of the Python package (api_command.hpp); not listed in --help.
   if (cmd == "api") return app::apiCommand(argc, argv);
   // Tools of the Python package (docs/python.md): arguments and exit status pass through.
-  if (cmd == "plot")
+  if (cmd == "plot" || cmd == "study")
     return app::runPythonTool(cmd, std::vector<std::string>(argv + 2, argv + argc));
   std::fprintf(stderr, "openmss: unknown command '%s'\n%s", cmd.c_str(), kMainHelp);
   return 64;
