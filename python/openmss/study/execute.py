@@ -9,6 +9,7 @@ stored results once all variants have one.
 
 from __future__ import annotations
 
+import contextlib
 import logging
 import os
 import sys
@@ -69,6 +70,8 @@ def run_study(study: Study, out: Path, scheduler: str | None = None, workers: in
     if missing:
         _run_missing(study, out, binary, missing, keys, results, scheduler, workers, progress,
                      reused, len(variants))
+    with contextlib.suppress(OSError):
+        (out / "variants" / ".work").rmdir()  # the tasks' scratch folders, when all are gone
     table = out / TABLE
     tmp = out / (TABLE + ".tmp")
     tmp.write_text(table_text(study, variants, results))
