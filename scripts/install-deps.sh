@@ -16,6 +16,9 @@ packages=(
   # and its tests; pybind11-dev and python3-dev for its optional in-process extension.
   python3 python3-numpy python3-pandas python3-matplotlib python3-pytest
   pybind11-dev python3-dev
+  # Design studies (python/openmss/study, docs/studies.md): Dask (LocalCluster, dask-scheduler,
+  # dask-worker), the study file reader and the progress bar.
+  python3-distributed python3-yaml python3-tqdm
 )
 
 missing=()

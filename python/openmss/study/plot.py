@@ -54,7 +54,7 @@ def main_effects(study: Study, variants: list[Variant], results: dict, path: Pat
             ax.tick_params(labelsize=7)
     fig.suptitle(f"{study.name}: main effects ({len(ok)} of {len(variants)} variants ok)",
                  fontsize=9)
-    fig.tight_layout()
+    fig.tight_layout(rect=(0, 0, 1, 0.97))  # room for the title
     fig.savefig(path, dpi=100)
     plt.close(fig)
     return True
