@@ -18,7 +18,8 @@ SLOW = {"end": 6.0, "dtout": 0.005}
 
 def start_client(study_file, address, out):
     return subprocess.Popen([sys.executable, "-m", "openmss.study", "run", str(study_file),
-                             "--scheduler", address, "--out", str(out), "--no-progress", "--no-plot"],
+                             "--scheduler", address, "--out", str(out), "--no-progress",
+                             "--no-plot"],
                             stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True,
                             env=os.environ.copy())
 

@@ -2,7 +2,8 @@
 (also ``openmss study …``): runs a design study (docs/studies.md).
 
 Exit status: 0 when every variant has a result (failed variants are results: their status
-and message are in the table), 1 for an unusable study file, 64 for a usage error."""
+and message are in the table), 1 for an unusable study file, 64 for a usage error, 130 when
+interrupted (Ctrl-C; the finished variants are kept)."""
 
 from __future__ import annotations
 
@@ -55,6 +56,11 @@ def main(argv=None) -> int:
     except FileNotFoundError as e:
         print(f"openmss study: error: {e}", file=sys.stderr)
         return 1
+    except KeyboardInterrupt:
+        done = len(list((out / "variants").glob("v*/result.json")))
+        print(f"openmss study: interrupted; {done} variant result(s) are stored in {out}; "
+              "run the same command again to run the rest", file=sys.stderr)
+        return 130
     counts = ", ".join(f"{n} {s}" for s, n in sorted(report.statuses.items()))
     print(f"{study.name}: {report.variants} variants ({report.ran} run, {report.reused} "
           f"already done): {counts}")

@@ -106,7 +106,8 @@ def _parameter(where: str, p: Any, design: str) -> Parameter:
     _keys(where, p, {"set", "values", "range", "low", "high", "template"}, {"set"})
     target = p["set"]
     if not isinstance(target, str) or not _SET.match(target.strip()):
-        _fail(f"{where}.set", f"expected STATEMENT/id.ARGUMENT (e.g. SPRINGDAMPER/3.K), got {target!r}")
+        _fail(f"{where}.set",
+              f"expected STATEMENT/id.ARGUMENT (e.g. SPRINGDAMPER/3.K), got {target!r}")
     template = p.get("template")
     if template is not None and (not isinstance(template, str) or "{value}" not in template):
         _fail(f"{where}.template", "expected a text containing {value}")
@@ -179,7 +180,8 @@ def parse_study(data: Any, path: Path) -> Study:
         samples, seed = top.get("samples"), top.get("seed")
         for key, v in (("samples", samples), ("seed", seed)):
             if not isinstance(v, int) or isinstance(v, bool) or v < (1 if key == "samples" else 0):
-                _fail(f"{where}: {key}", "latin_hypercube needs an integer samples >= 1 and seed >= 0")
+                _fail(f"{where}: {key}",
+                      "latin_hypercube needs an integer samples >= 1 and seed >= 0")
     elif "samples" in top or "seed" in top:
         _fail(where, "samples and seed are for design: latin_hypercube")
     params = top["parameters"]
