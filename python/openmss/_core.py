@@ -39,7 +39,7 @@ def _call(*args):
         raise RuntimeError(f"the openmss program {exe} does not exist: build the project "
                            "(scripts/build.sh) or set OPENMSS_BINARY")
     p = subprocess.run([exe, "api", *[str(a) for a in args]], stdout=subprocess.PIPE,
-                       stderr=subprocess.PIPE, text=True, check=False)
+                       stderr=subprocess.PIPE, text=True, errors="replace", check=False)
     if p.returncode != 0:
         raise RuntimeError(f"openmss api {args[0]} failed (status {p.returncode}): "
                            f"{p.stderr.strip()}")
