@@ -133,3 +133,27 @@ def test_table_order_and_format_do_not_depend_on_completion_order(tmp_path):
                     "1,1.5,nan,ok,\n"
                     "2,2.5,0.3333333333,ok,\n")
     assert table_text(study, vs, dict(sorted(results.items()))) == text
+
+
+def test_the_openmss_program_starts_the_study_tool(tmp_path):
+    # `openmss study …` runs `python3 -m openmss.study …` (src/app/python_tool.cpp): the
+    # variants of a 2 x 2 design, printed without running, and a bad study file's exit 1.
+    import subprocess
+
+    from study_support import binary
+
+    path = write_study(tmp_path, parameters=[
+        {"set": "PART/3.MASS", "values": [1, 2]},
+        {"set": "MARKER/11.QP", "values": [0.4, 0.5], "template": "{value},0,0"}])
+    r = subprocess.run([binary(), "study", "variants", str(path)], capture_output=True,
+                       text=True)
+    assert r.returncode == 0, r.stderr
+    assert r.stdout.splitlines() == [
+        "0 --set 'PART/3.MASS=1' --set 'MARKER/11.QP=0.4,0,0'",
+        "1 --set 'PART/3.MASS=1' --set 'MARKER/11.QP=0.5,0,0'",
+        "2 --set 'PART/3.MASS=2' --set 'MARKER/11.QP=0.4,0,0'",
+        "3 --set 'PART/3.MASS=2' --set 'MARKER/11.QP=0.5,0,0'"]
+    r = subprocess.run([binary(), "study", "run", str(tmp_path / "none.yaml")],
+                       capture_output=True, text=True)
+    assert r.returncode == 1
+    assert "none.yaml: cannot read the study file" in r.stderr
