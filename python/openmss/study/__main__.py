@@ -2,7 +2,8 @@
 (also ``openmss study …``): runs a design study (docs/studies.md).
 
 Exit status: 0 when every variant has a result (failed variants are results: their status
-and message are in the table), 1 for an unusable study file, 64 for a usage error, 130 when
+and message are in the table), 1 for an unusable study file, a missing program or an
+unreachable scheduler, 64 for a usage error, 130 when
 interrupted (Ctrl-C; the finished variants are kept)."""
 
 from __future__ import annotations
@@ -53,7 +54,7 @@ def main(argv=None) -> int:
         report = run_study(study, out, scheduler=args.scheduler, workers=args.workers,
                            binary=args.binary, progress=False if args.no_progress else None,
                            plot=not args.no_plot)
-    except FileNotFoundError as e:
+    except (FileNotFoundError, ConnectionError) as e:
         print(f"openmss study: error: {e}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:

@@ -39,7 +39,11 @@ def _client(scheduler: str | None, workers: int | None):
     from distributed import Client, LocalCluster
 
     if scheduler:
-        return Client(scheduler, timeout="20s"), None
+        try:
+            return Client(scheduler, timeout="20s"), None
+        except (OSError, TimeoutError) as e:
+            raise ConnectionError(f"cannot connect to the Dask scheduler {scheduler}: {e}") \
+                from None
     # Each task runs the solver as a subprocess and its worker thread only waits for it (the
     # GIL is released), so the workers are threads of this process: one solver per worker,
     # without the seconds that starting worker processes takes.
