@@ -38,8 +38,7 @@ struct Cursor {
 class GroupParser {
  public:
   GroupParser(const std::vector<LinePiece>& pieces, InputKind kind, const std::string& file,
-              Diagnostics& diags, const std::string& previousSubject,
-              bool requireArguments = true)
+              Diagnostics& diags, const std::string& previousSubject, bool requireArguments = true)
       : pieces_(pieces),
         kind_(kind),
         file_(file),

@@ -19,25 +19,22 @@ using namespace openmss::testing;  // scratch, run, slurp, write (tests/support)
 // A mass sliding along global X on a spring-damper, pulled by an SFORCE whose function reads
 // VARIABLE/7, with gravity along the slide.
 std::string deck(const std::string& k, const std::string& variable, const std::string& gravity) {
-  return "oscillator\n"
-         "PART/1, GROUND\n"
-         "MARKER/10, PART=1, REULER=90D,90D,0\n"
-         "PART/2, MASS=2, CM=20, IP=0.1,0.1,0.1\n"
-         "MARKER/20, PART=2, QP=1,0,0, REULER=90D,90D,0\n"
-         "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
-         "SPRINGDAMPER/3, TRANSLATIONAL, I=20, J=10, K=" +
-         k +
-         ", C=0.5, LENGTH=0.8\n"
-         "VARIABLE/7, FUNCTION=" +
-         variable +
-         "\n"
-         "SFORCE/4, TRANSLATION, I=20, J=10, FUNCTION=VARVAL(7)\n"
-         "ACCGRAV/IGRAV=" +
-         gravity +
-         "\n"
-         "REQUEST/1, DISPLACEMENT, I=20, J=10\n"
-         "OUTPUT/REQSAVE\n"
-         "END\n";
+  std::string text =
+      "oscillator\n"
+      "PART/1, GROUND\n"
+      "MARKER/10, PART=1, REULER=90D,90D,0\n"
+      "PART/2, MASS=2, CM=20, IP=0.1,0.1,0.1\n"
+      "MARKER/20, PART=2, QP=1,0,0, REULER=90D,90D,0\n"
+      "JOINT/1, TRANSLATIONAL, I=20, J=10\n";
+  text += "SPRINGDAMPER/3, TRANSLATIONAL, I=20, J=10, K=" + k + ", C=0.5, LENGTH=0.8\n";
+  text += "VARIABLE/7, FUNCTION=" + variable + "\n";
+  text += "SFORCE/4, TRANSLATION, I=20, J=10, FUNCTION=VARVAL(7)\n";
+  if (!gravity.empty()) text += "ACCGRAV/IGRAV=" + gravity + "\n";  // "": no gravity
+  text +=
+      "REQUEST/1, DISPLACEMENT, I=20, J=10\n"
+      "OUTPUT/REQSAVE\n"
+      "END\n";
+  return text;
 }
 
 const std::string kVariable = "3*SIN(2*TIME)";
@@ -68,6 +65,11 @@ TEST(SetOption, OverridesGiveTheRequestFileOfTheEditedDataSet) {
       // A statement without id, and two overrides at once.
       {"--set ACCGRAV.IGRAV=-3 --set SPRINGDAMPER/3.K=40", deck("40", kVariable, "-3")},
   };
+  // A data set without gravity: the override of the singleton ACCGRAV adds it.
+  const std::string weightless = deck("100", kVariable, "");
+  const std::string added = requestsOf(dir / "added", weightless, "--set ACCGRAV.IGRAV=-3");
+  EXPECT_EQ(added, requestsOf(dir / "written", deck("100", kVariable, "-3"), ""));
+  EXPECT_NE(added, requestsOf(dir / "weightless", weightless, ""));
   int compared = 0;
   for (const Case& c : cases) {
     const std::string name = std::to_string(compared);
