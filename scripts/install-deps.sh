@@ -18,6 +18,9 @@ packages=(
   python3 python3-numpy python3-pandas python3-matplotlib python3-pytest
   pybind11-dev python3-dev
   chromium python3-pil  # the viewer's browser test (tests/viewer): headless Chromium, PNG reading
+  # Design studies (python/openmss/study, docs/studies.md): Dask (LocalCluster, dask-scheduler,
+  # dask-worker), the study file reader and the progress bar.
+  python3-distributed python3-yaml python3-tqdm
 )
 # node and npm install three.js for the viewer (viewer/package-lock.json, `npm ci` at configure
 # time): Debian's, only when no node is on the machine.

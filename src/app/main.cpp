@@ -43,12 +43,17 @@ constexpr const char* kMainHelp =
     "  openmss run FILE.acf [--outdir DIR]          run an ADAMS command file\n"
     "  openmss run FILE.adm [--end T] [--steps N | --dtout H] [--outdir DIR]\n"
     "                                               run a model with a transient simulation\n"
+    "  openmss run FILE [--set STATEMENT/id.ARGUMENT=value ...]\n"
+    "                                               run with arguments of the data set changed\n"
     "  openmss check FILE.adm [--user-library LIB]  read and check a model, print its DOF\n"
     "  openmss check FILE.acf                       check a command file and its model\n"
     "  openmss eval 'EXPR' [--time T] [--derivative]  evaluate a function expression\n"
     "  openmss plot RESULT --request ID --component N [--vs OTHER] [-o OUT.png]\n"
     "                                               plot a request of a .req or .res (Python)\n"
     "  openmss view RESULT [--model FILE.adm] [--port P]  3-D viewer in the browser\n"
+    "  openmss study run STUDY.yaml [--scheduler ADDRESS] [--workers N] [--out DIR]\n"
+    "                                               a design study on Dask (Python,\n"
+    "                                               docs/studies.md)\n"
     "  openmss COMMAND --help                       help on one command\n"
     "  openmss --version                            print the version\n"
     "\n"
@@ -65,7 +70,11 @@ constexpr const char* kRunHelp =
     "Outputs go to the current directory or to --outdir: <prefix>.msg, <prefix>.req.\n"
     "A progress line (simulated time, steps, ETA) is shown on a terminal.\n"
     "--user-library LIB names the default library of user-written subroutines (ADAMS's\n"
-    "  run-user mode): GSEs without ROUTINE=lib:: or INTERFACE= take their routines from it.\n";
+    "  run-user mode): GSEs without ROUTINE=lib:: or INTERFACE= take their routines from it.\n"
+    "--set STATEMENT/id.ARGUMENT=value (repeatable) changes one argument of the data set as\n"
+    "  read, e.g. --set SPRINGDAMPER/3.K=12.5, --set VARIABLE/7.FUNCTION=2*TIME,\n"
+    "  --set ACCGRAV.JGRAV=-9.81; the value is read as in a data set (docs/studies.md).\n"
+    "  An unknown statement, id or argument is an input error (exit 1).\n";
 
 constexpr const char* kCheckHelp =
     "openmss check FILE.adm [--user-library LIB]\n"
@@ -114,8 +123,10 @@ int printSummary(const commands::Session& s, bool ok) {
   return 0;
 }
 
-int runCommandFile(const std::string& path, const std::string& outdir, bool quiet) {
+int runCommandFile(const std::string& path, const std::string& outdir, bool quiet,
+                   const std::vector<std::string>& overrides) {
   commands::SessionOptions opt;
+  opt.overrides = overrides;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
   commands::Session session(opt);
@@ -128,8 +139,9 @@ int runCommandFile(const std::string& path, const std::string& outdir, bool quie
 }
 
 int runModel(const std::string& path, double end, long steps, double dtout,
-             const std::string& outdir, bool quiet) {
+             const std::string& outdir, bool quiet, const std::vector<std::string>& overrides) {
   commands::SessionOptions opt;
+  opt.overrides = overrides;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
   commands::Session session(opt);
@@ -268,6 +280,7 @@ int main(int argc, char** argv) {
     double end = 1.0, dtout = 0.0;
     long steps = 100;
     bool quiet = false;
+    std::vector<std::string> overrides;
     for (int i = 2; i < argc; ++i) {
       std::string a = argv[i];
       auto next = [&]() -> const char* {
@@ -282,6 +295,7 @@ int main(int argc, char** argv) {
       else if (a == "--steps") steps = std::atol(next());
       else if (a == "--dtout") dtout = std::atof(next());
       else if (a == "--quiet") quiet = true;
+      else if (a == "--set") overrides.push_back(next());
       else if (a == "--user-library") user::setDefaultLibrary(fs::absolute(next()).string());
       else if (a.starts_with("--")) {
         std::fprintf(stderr, "openmss run: unknown option %s\n%s", a.c_str(), kRunHelp);
@@ -297,8 +311,8 @@ int main(int argc, char** argv) {
     }
     const std::string ext = fs::path(file).extension().string();
     const int status = ext == ".acf" || ext == ".ACF"
-                           ? runCommandFile(file, outdir, quiet)
-                           : runModel(file, end, steps, dtout, outdir, quiet);
+                           ? runCommandFile(file, outdir, quiet, overrides)
+                           : runModel(file, end, steps, dtout, outdir, quiet, overrides);
     // A user subroutine that stopped the run (NaN, ERRMES STOP, a crash) is named last
     // (docs/user-subroutines.md, "Bad user code").
     if (const std::string fatal = user::firstUserFatal(); status != 0 && !fatal.empty()) {
@@ -321,7 +335,7 @@ int main(int argc, char** argv) {
   // The machine interface of the Python package (api_command.hpp); not listed in --help.
   if (cmd == "api") return app::apiCommand(argc, argv);
   // Tools of the Python package (docs/python.md): arguments and exit status pass through.
-  if (cmd == "plot")
+  if (cmd == "plot" || cmd == "study")
     return app::runPythonTool(cmd, std::vector<std::string>(argv + 2, argv + argc));
   if (cmd == "view") {
     if (wantsHelp(argc, argv)) { std::printf("%s", app::kViewHelp); return 0; }

@@ -10,6 +10,7 @@
 #include "analysis/model_summary.hpp"
 #include "analysis/statics_run.hpp"
 #include "analysis/transient_run.hpp"
+#include "commands/dataset_overrides.hpp"
 #include "commands/linear_command.hpp"
 #include "commands/save_reload_command.hpp"
 #include "commands/simulate_command.hpp"
@@ -96,6 +97,8 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   language::Dataset dataset;
   Diagnostics readDiags;
   language::readDatasetFile(path, dataset, readDiags);
+  for (const auto& o : options_.overrides) msg_.line(" override: --set " + o);
+  applyOverrides(options_.overrides, dataset, readDiags);
   datasetText_ = readTextFile(path);  // SAVE/SYSTEM (save_reload_command.hpp)
   commandHistory_.clear();
   // A model loaded at the prompt after a run starts afresh; the old run state and system

@@ -8,6 +8,7 @@
 #include <memory>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "analysis/analysis_context.hpp"
 #include "analysis/model_summary.hpp"
@@ -36,6 +37,9 @@ struct SessionOptions {
   // arguments, the model each change leaves) but no analysis runs and no file is written;
   // SIMULATE only advances the time to its END.
   bool checkOnly = false;
+  // `openmss run … --set STATEMENT/id.ARGUMENT=value`: laid over every data set loaded
+  // (dataset_overrides.hpp).
+  std::vector<std::string> overrides;
 };
 
 class Session final : private analysis::RunReport {

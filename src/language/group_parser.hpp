@@ -38,14 +38,15 @@ struct Cursor {
 class GroupParser {
  public:
   GroupParser(const std::vector<LinePiece>& pieces, InputKind kind, const std::string& file,
-              Diagnostics& diags, const std::string& previousSubject)
+              Diagnostics& diags, const std::string& previousSubject, bool requireArguments = true)
       : pieces_(pieces),
         kind_(kind),
         file_(file),
         diags_(diags),
         previousSubject_(previousSubject),
         table_(kind == InputKind::DataSet ? statementSchema() : commandSchema()),
-        tableCandidates_(candidatesOf(table_)) {}
+        tableCandidates_(candidatesOf(table_)),
+        requireArguments_(requireArguments) {}
 
   std::vector<Statement> parseAll();
 
@@ -122,6 +123,7 @@ class GroupParser {
   const std::string& previousSubject_;
   const std::vector<StatementSpec>& table_;
   std::vector<NameCandidate> tableCandidates_;
+  bool requireArguments_;  // parseStatementGroup's requireArguments
   Cursor c_;
   // Arguments written in the current statement, valid or not: a required argument that was
   // written with a bad value has been diagnosed already and is not "missing".

@@ -146,8 +146,8 @@ void readDatasetText(std::string_view text, const std::string& fileName, Dataset
                   "Remove the '&' or add the rest of the statement");
     }
     int lastLineRead = pieces.back().line->number;
-    for (auto& st :
-         parseStatementGroup(pieces, InputKind::DataSet, fileName, diags, previousSubject)) {
+    for (auto& st : parseStatementGroup(pieces, InputKind::DataSet, fileName, diags,
+                                        previousSubject, options.requireArguments)) {
       if (st.name == "END") {
         // Nothing after END is read.
         out.sawEnd = true;

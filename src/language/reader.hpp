@@ -17,6 +17,9 @@ struct ReadOptions {
   // ADAMS documents an 80-column limit, but ADAMS 2012 accepted the 140-column REQUEST lines
   // of our validation models, so longer lines are read; this option warns about them.
   bool warnLongLines = false;
+  // false: the statements only change arguments of statements read before (openmss run
+  // --set, commands/dataset_overrides.hpp); their required arguments are not asked for.
+  bool requireArguments = true;
 };
 
 // Reads a data set. Line 1 is the title; statements follow until END. Returns true when the

@@ -188,7 +188,7 @@ std::optional<Statement> GroupParser::parseStatement() {
 
   parseArguments(st, spec, !idText.empty(), hadSlash);
   st.lastLine = line().number;
-  if (kind_ == InputKind::DataSet) checkRequired(st, spec);
+  if (kind_ == InputKind::DataSet && requireArguments_) checkRequired(st, spec);
   return st;
 }
 
@@ -329,9 +329,10 @@ namespace openmss::language {
 
 std::vector<Statement> parseStatementGroup(const std::vector<LinePiece>& pieces, InputKind kind,
                                            const std::string& file, Diagnostics& diags,
-                                           const std::string& previousSubject) {
+                                           const std::string& previousSubject,
+                                           bool requireArguments) {
   if (pieces.empty()) return {};
-  parsing::GroupParser parser(pieces, kind, file, diags, previousSubject);
+  parsing::GroupParser parser(pieces, kind, file, diags, previousSubject, requireArguments);
   return parser.parseAll();
 }
 

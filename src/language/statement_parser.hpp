@@ -29,9 +29,11 @@ struct LinePiece {
 // Parses every statement of a group (several when separated by ';'). Unknown statements are
 // diagnosed and left out; statements with bad arguments are kept without those arguments.
 // `previousSubject` names the statement before the group, for "this line seems to continue
-// PART/2" diagnostics.
+// PART/2" diagnostics. `requireArguments` false reads statements that only change arguments
+// of a statement read before (openmss run --set): its required arguments are not asked for.
 std::vector<Statement> parseStatementGroup(const std::vector<LinePiece>& pieces, InputKind kind,
                                            const std::string& file, Diagnostics& diags,
-                                           const std::string& previousSubject);
+                                           const std::string& previousSubject,
+                                           bool requireArguments = true);
 
 }  // namespace openmss::language

@@ -1,0 +1,94 @@
+"""One variant: the C++ solver run as a subprocess in a folder of its own, its request file
+read and its outputs computed. Runs inside a Dask task (on any worker), so it takes and
+returns plain data and never raises: every failure becomes the variant's status and message.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import subprocess
+import time
+import uuid
+from pathlib import Path
+
+from .outputs import OutputError, compute
+from ..req import RequestFileError, read_req
+
+# Exit statuses of `openmss run` (README, "Using it").
+STATUS = {0: "ok", 1: "input-error", 2: "failed"}
+
+
+def command(binary: str, model: str, run: dict, overrides, outdir: str) -> list[str]:
+    cmd = [binary, "run", model, "--outdir", outdir, "--quiet"]
+    for key in ("end", "steps", "dtout"):
+        if key in run:
+            cmd += [f"--{key}", repr(run[key]) if isinstance(run[key], float) else str(run[key])]
+    for o in overrides:
+        cmd += ["--set", o]
+    return cmd
+
+
+def diagnosis(outdir: Path, stderr: str) -> str:
+    """The errors of the run as the .msg (or, without one, stderr) states them, one line each,
+    joined by ' | ': what the table's message column shows for a failed variant."""
+    lines = []
+    for msg in sorted(outdir.glob("*.msg")):
+        lines += [ln.strip() for ln in msg.read_text(errors="replace").splitlines()
+                  if "error:" in ln]
+    if not lines:
+        lines = [ln.strip() for ln in stderr.splitlines() if ln.strip()][-3:]
+    return " | ".join(dict.fromkeys(lines))  # each once, in order
+
+
+def run_variant(task: dict) -> dict:
+    """``task``: index, binary, model, run, overrides, outdir, outputs (spec.Output list),
+    timeout. Returns index, status, returncode, message, outputs (name -> float), seconds."""
+    start = time.monotonic()
+    final = Path(task["outdir"])
+    # The solver writes into a folder of this attempt, moved into place when it is done: a
+    # task still running for a study that was interrupted cannot mix its files with those of
+    # the rerun (both write the same, deterministic, files; the last move wins).
+    outdir = final.parent / ".work" / f"{final.name}-{uuid.uuid4().hex[:12]}"
+    outdir.mkdir(parents=True)
+    try:
+        result = _run(task, outdir)
+        final.mkdir(parents=True, exist_ok=True)
+        for old in list(final.glob("*.req")) + list(final.glob("*.msg")):
+            old.unlink(missing_ok=True)
+        for made in sorted(outdir.iterdir()):
+            os.replace(made, final / made.name)
+    finally:
+        shutil.rmtree(outdir, ignore_errors=True)
+    result["seconds"] = time.monotonic() - start
+    return result
+
+
+def _run(task: dict, outdir: Path) -> dict:
+    result = {"index": task["index"], "status": "", "returncode": None, "message": "",
+              "outputs": {}, "seconds": 0.0}
+    cmd = command(task["binary"], task["model"], task["run"], task["overrides"], str(outdir))
+    try:
+        proc = subprocess.run(cmd, cwd=outdir, capture_output=True, text=True,
+                              timeout=task.get("timeout"), env={**os.environ, "LC_ALL": "C"})
+    except subprocess.TimeoutExpired:
+        result.update(status="timeout", message=f"no result after {task['timeout']:g} s")
+    except OSError as e:
+        result.update(status="crashed", message=f"cannot run {task['binary']}: {e.strerror}")
+    else:
+        result["returncode"] = proc.returncode
+        result["status"] = STATUS.get(proc.returncode, "crashed")
+        if proc.returncode != 0:
+            result["message"] = diagnosis(outdir, proc.stderr) or f"exit status {proc.returncode}"
+        else:
+            try:
+                reqs = sorted(outdir.glob("*.req"))
+                if len(reqs) != 1:
+                    raise OutputError(f"expected one request file in {outdir}, found {len(reqs)}"
+                                      " (the model needs OUTPUT/REQSAVE)")
+                rf = read_req(reqs[0])
+                requests = {e.id: (e.kind, rf.values[:, k, :]) for k, e in enumerate(rf.entries)}
+                result["outputs"] = compute(task["outputs"], rf.times, requests)
+            except (OutputError, RequestFileError, OSError, ValueError) as e:
+                result.update(status="output-error", message=str(e))
+    return result
