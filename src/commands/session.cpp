@@ -75,7 +75,7 @@ void Session::echoCommand(const std::string& text) {
 
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
   closeResults();  // the previous model's .res (the map is the model's)
-  resFailed_ = false;
+  resFailed_ = analysisFailed_ = false;
   prefix_ = outputPrefix;
   if (!options_.checkOnly) std::filesystem::create_directories(options_.outputDirectory);
   if (!options_.checkOnly && !msg_.open(messageFilePath())) {
@@ -197,6 +197,7 @@ bool Session::simulate(const language::Statement& c) {
   else
     ok = analysis::runTransient(run, std::get<analysis::TransientRun>(*request));
   if (!ok) {
+    analysisFailed_ = true;
     res_.markFailed();  // TerminationStatus runStatus="Failed" (every step so far is kept)
     return false;
   }
@@ -258,6 +259,7 @@ bool Session::writeFrame(const analysis::OutputFrame& frame) {
       context().error(nullptr, err, "Check that the output directory is writable.");
       return false;
     }
+    if (analysisFailed_) res_.markFailed();  // an earlier analysis failed before any step
   }
   if (res_.writeStep(frame)) return true;
   resFailed_ = true;

@@ -130,6 +130,7 @@ class Session final : private analysis::RunReport {
   output::ResultsFileWriter res_;
   model::ResultsSettings results_;  // RESULTS and CNAMES of the data set (results_arguments.hpp)
   bool resFailed_ = false;  // the .res could not be written: not tried again for this model
+  bool analysisFailed_ = false;  // an analysis of this model failed (the .res says "Failed")
   std::string prefix_;
   language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
   ModelEdits pendingEdits_;    // as the commands so far leave the model
