@@ -104,7 +104,8 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   editsPending_ = false;
   model_ = std::make_unique<model::Model>();
   model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
-  results_ = model::readResultsSettings(dataset, readDiags);  // the .res (RESULTS, CNAMES)
+  // The .res of RESULTS, with REQUEST's CNAMES (model/results_arguments.hpp).
+  results_ = model::readResultsSettings(dataset, readDiags);
   reportAll(readDiags);
   msg_.line("");
   msg_.line(" Model title: " + dataset.title);

@@ -128,9 +128,12 @@ class Session final : private analysis::RunReport {
   output::MessageLog msg_;
   output::RequestFileWriter req_;
   output::ResultsFileWriter res_;
-  model::ResultsSettings results_;  // RESULTS and CNAMES of the data set (results_arguments.hpp)
-  bool resFailed_ = false;  // the .res could not be written: not tried again for this model
-  bool analysisFailed_ = false;  // an analysis of this model failed (the .res says "Failed")
+  // RESULTS and CNAMES of the data set (results_arguments.hpp); resFailed_: the .res could not
+  // be written, not tried again for this model; analysisFailed_: an analysis of this model
+  // failed (the .res says "Failed").
+  model::ResultsSettings results_;
+  bool resFailed_ = false;
+  bool analysisFailed_ = false;
   std::string prefix_;
   language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
   ModelEdits pendingEdits_;    // as the commands so far leave the model
