@@ -77,7 +77,7 @@ void Session::echoCommand(const std::string& text) {
 
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
   closeResults();  // the previous model's .res (the map is the model's)
-  resFailed_ = false;
+  resFailed_ = analysisFailed_ = false;
   graFailed_ = false;
   prefix_ = outputPrefix;
   if (!options_.checkOnly) std::filesystem::create_directories(options_.outputDirectory);
@@ -108,8 +108,9 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   pendingEdits_ = appliedEdits_ = ModelEdits{};
   editsPending_ = false;
   model_ = std::make_unique<model::Model>();
-  model::buildModel(dataset, *model_, readDiags);             // model checks even after read errors
-  results_ = model::readResultsSettings(dataset, readDiags);  // the .res (RESULTS, CNAMES)
+  model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
+  // The .res of RESULTS, with REQUEST's CNAMES (model/results_arguments.hpp).
+  results_ = model::readResultsSettings(dataset, readDiags);
   reportAll(readDiags);
   msg_.line("");
   msg_.line(" Model title: " + dataset.title);
@@ -202,6 +203,7 @@ bool Session::simulate(const language::Statement& c) {
   else
     ok = analysis::runTransient(run, std::get<analysis::TransientRun>(*request));
   if (!ok) {
+    analysisFailed_ = true;
     res_.markFailed();  // TerminationStatus runStatus="Failed" (every step so far is kept)
     return false;
   }
@@ -291,6 +293,7 @@ bool Session::writeFrame(const analysis::OutputFrame& frame) {
       context().error(nullptr, err, "Check that the output directory is writable.");
       return false;
     }
+    if (analysisFailed_) res_.markFailed();  // an earlier analysis failed before any step
   }
   if (res_.writeStep(frame)) return true;
   resFailed_ = true;

@@ -133,8 +133,12 @@ class Session final : private analysis::RunReport {
   output::MessageLog msg_;
   output::RequestFileWriter req_;
   output::ResultsFileWriter res_;
-  model::ResultsSettings results_;  // RESULTS and CNAMES of the data set (results_arguments.hpp)
-  bool resFailed_ = false;          // the .res could not be written: not tried again for this model
+  // RESULTS and CNAMES of the data set (results_arguments.hpp); resFailed_: the .res could not
+  // be written, not tried again for this model; analysisFailed_: an analysis of this model
+  // failed (the .res says "Failed").
+  model::ResultsSettings results_;
+  bool resFailed_ = false;
+  bool analysisFailed_ = false;
   // The .gra of OUTPUT/GRSAVE (output/graphics_file.hpp), written from the same frames.
   output::GraphicsFileWriter gra_;
   bool graFailed_ = false;
