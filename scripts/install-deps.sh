@@ -14,7 +14,7 @@ packages=(
   libbenchmark-dev       # micro-benchmarks in bench/
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
   # The Python package openmss (python/, docs/python.md), run by Debian's /usr/bin/python3,
-  # and its tests; pybind11-dev and python3-dev for its optional in-process extension.
+  # and its tests; pybind11-dev and python3-dev for its in-process extension (openmss._native).
   python3 python3-numpy python3-pandas python3-matplotlib python3-pytest
   pybind11-dev python3-dev
   chromium python3-pil  # the viewer's browser test (tests/viewer): headless Chromium, PNG reading

@@ -1,12 +1,13 @@
 """The bridge from the package to the solver (src/api, docs/python.md).
 
-By default each call runs the `openmss` program's machine interface, `openmss api ...`
-(src/app/api_command.cpp), in a child process and reads the one JSON document it prints: a
-run that crashes or leaks cannot take the interpreter down, runs from several threads or Dask
-workers are independent processes, and the solver libraries need no position-independent
-build. When the optional pybind11 extension `_native` was built (cmake
--DOPENMSS_PYTHON_EXTENSION=ON) the same calls run in-process instead; both return the same
-dictionaries."""
+Two bridges return the same dictionaries:
+- "native" (the default): the pybind11 extension `_native` (python/bindings/module.cpp) calls
+  the C++ API in this process;
+- "process": each call runs the `openmss` program's machine interface, `openmss api ...`
+  (src/app/api_command.cpp), in a child process and reads the one JSON document it prints, so
+  a run that crashes cannot take the interpreter down.
+OPENMSS_BRIDGE=process (or native) chooses; without it the extension is used when it was built
+(cmake -DOPENMSS_PYTHON_EXTENSION=ON, the default), the child process otherwise."""
 
 import json
 import os
@@ -14,10 +15,27 @@ import subprocess
 
 from . import _build
 
-try:  # the optional in-process extension (python/bindings/module.cpp)
-    from . import _native
+try:  # the in-process extension (python/bindings/module.cpp)
+    from . import _native as _extension
 except ImportError:
-    _native = None
+    _extension = None
+
+
+def bridge():
+    """The bridge in use: "native" or "process" (module docstring)."""
+    wanted = os.environ.get("OPENMSS_BRIDGE", "")
+    if wanted == "process":
+        return "process"
+    if wanted == "native" and _extension is None:
+        raise RuntimeError("OPENMSS_BRIDGE=native, but the extension openmss._native was not "
+                           "built (cmake -DOPENMSS_PYTHON_EXTENSION=ON)")
+    if wanted not in ("", "native"):
+        raise RuntimeError(f"OPENMSS_BRIDGE={wanted}: use native or process")
+    return "native" if _extension is not None else "process"
+
+
+def _native():
+    return _extension if bridge() == "native" else None
 
 version = _build.VERSION
 
@@ -47,20 +65,23 @@ def _call(*args):
 
 
 def load_model(path):
-    if _native is not None:
-        return _native.load_model(path)
+    native = _native()
+    if native is not None:
+        return native.load_model(path)
     return _call("load", path)
 
 
 def run_acf(path, outdir):
-    if _native is not None:
-        return _native.run_acf(path, outdir)
+    native = _native()
+    if native is not None:
+        return native.run_acf(path, outdir)
     return _call("run-acf", path, outdir)
 
 
 def simulate(path, outdir, end, dtout, steps, integrator, error, prefix):
-    if _native is not None:
-        return _native.simulate(path, outdir, end, dtout, steps, integrator, error, prefix)
+    native = _native()
+    if native is not None:
+        return native.simulate(path, outdir, end, dtout, steps, integrator, error, prefix)
     # repr() prints the shortest text that reads back as the same double.
     return _call("simulate", path, outdir, repr(float(end)), repr(float(dtout)), int(steps),
                  integrator, repr(float(error)), prefix)
