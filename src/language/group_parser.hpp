@@ -82,6 +82,7 @@ class GroupParser {
     while (!atLineEnd()) {
       char ch = peek();
       if (isBlank(ch) || ch == ',' || ch == ';' || ch == '=' || ch == '\\' || ch == '"') break;
+      if (ch == ')' && inParenthesisedList_) break;
       if (ch == ':') {
         if (c_.pos + 1 < text().size() && text()[c_.pos + 1] == ':') {
           s += "::";
@@ -123,6 +124,8 @@ class GroupParser {
   const std::vector<StatementSpec>& table_;
   std::vector<NameCandidate> tableCandidates_;
   Cursor c_;
+  // Inside a parenthesised value list, e.g. INPUTS=(PRELOAD:REACTION_FORCE): ')' ends a token.
+  bool inParenthesisedList_ = false;
   // Arguments written in the current statement, valid or not: a required argument that was
   // written with a bad value has been diagnosed already and is not "missing".
   std::vector<std::string> writtenArguments_;
