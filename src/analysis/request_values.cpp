@@ -80,6 +80,16 @@ void forceElementsOnMarker(const mechanics::MultibodySystem& s, int marker, int 
   const mechanics::DynamicReads<double> reads = readsOf(s, yp);
   Eigen::Vector3d f, tq;
   for (const mechanics::ForceElementRef& e : fe.elements()) {
+    if (e.kind == mechanics::ForceElementKind::MultiPoint) {
+      // NFORCE: its load on `marker` as FX..TM(marker, other) reads it (docs/theory.md §6b).
+      bool atJ = false;
+      if (!fe.netForceActs(e, marker, other, &atJ)) continue;
+      V3<double> f3, t3;
+      fe.multiPointAction(e.index, marker, y.data(), f3, t3);
+      force += toEigen(f3);
+      torque += toEigen(t3);
+      continue;
+    }
     const int i = fe.iMarker(e), j = fe.jMarker(e);
     const bool atI = i == marker && (other < 0 || j == other);
     const bool atJ = j == marker && (other < 0 || i == other);
@@ -156,6 +166,12 @@ double measureValue(const mechanics::MultibodySystem& s, const model::Measure& m
   double out = 0.0;
   if (mechanics::kinematicMeasure(s.model(), s.layout(), ms, y.data(), &out, s.runState()))
     return out;
+  if (ms.l >= 0) {
+    // Derivatives in the frame of marker l: the function's own definition
+    // (mechanics/dynamic_measures.hpp), one for outputs and functions.
+    const mechanics::DynamicReads<double> reads{yp.data(), &s.constraints()};
+    if (mechanics::dynamicMeasure(s.model(), s.layout(), ms, y.data(), &reads, &out)) return out;
+  }
   const Kin i = markerKinematics(s, ms.i, y, yp);
   const Kin j = markerKinematics(s, ms.j, y, yp);
   const Eigen::Matrix3d k = ms.k >= 0 ? markerKinematics(s, ms.k, y, yp).axes
@@ -267,6 +283,15 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
         const auto& jt = m.motions[e];  // the markers it acts between
         if (between(jt.iMarker, jt.jMarker)) {
           s.elementReaction(true, e, r.iMarker, y.data(), f, tq);
+          ft += f; tt += tq;
+        }
+      }
+      // PTCV: its reaction on I when J is its JFLOAT or RM marker (docs/theory.md §5d).
+      for (int e = 0; e < static_cast<int>(m.ptcvs.size()); ++e) {
+        const model::PointCurve& p = m.ptcvs[e];
+        if (r.iMarker == p.iMarker && (r.jMarker == p.jFloat || r.jMarker == p.rmMarker)) {
+          s.elementReaction(mechanics::MultibodySystem::ConstraintElement::PointCurve, e,
+                            r.iMarker, y.data(), f, tq);
           ft += f; tt += tq;
         }
       }

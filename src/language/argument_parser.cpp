@@ -144,6 +144,13 @@ void GroupParser::parseValues(Statement& st, Argument& arg, const ArgumentSpec& 
     enterNextPiece();
     skipBlanks(true);
   }
+  // A parenthesised list, as ADAMS writes keyword lists (INPUTS=(PRELOAD:REACTION_FORCE)): the
+  // parentheses only group the values, which ',' or ':' separate, on one line.
+  const bool parenthesised = peek() == '(';
+  if (parenthesised) {
+    ++c_.pos;
+    inParenthesisedList_ = true;
+  }
   size_t given = 0;
   bool valuesOk = true;
   while (true) {
@@ -162,6 +169,23 @@ void GroupParser::parseValues(Statement& st, Argument& arg, const ArgumentSpec& 
       arg.values.push_back(std::move(*v));
     else
       valuesOk = false;
+    if (parenthesised) {
+      skipBlanks(true);
+      if (!atLineEnd() && peek() == ')') {
+        ++c_.pos;
+        break;
+      }
+      if (!atLineEnd() && (peek() == ',' || peek() == ':')) {
+        arg.separators.push_back(peek());
+        ++c_.pos;
+        continue;
+      }
+      diags_.error(here(), st.subject(), "the list of " + as.name + " values is not closed",
+                   "End the list with ')' on the same line, e.g. " + as.name + "=(A:B)");
+      valuesOk = false;
+      skipToDelimiter();
+      break;
+    }
     const Cursor save = c_;
     const Separator s = readSeparator();
     if (s == Separator::Colon) {
@@ -175,6 +199,7 @@ void GroupParser::parseValues(Statement& st, Argument& arg, const ArgumentSpec& 
     c_ = save;
     break;
   }
+  inParenthesisedList_ = false;
   if (valuesOk &&
       (given < static_cast<size_t>(as.minValues) || given > static_cast<size_t>(as.maxValues)))
     diags_.error(arg.where, st.subject(), countMessage(as, given));

@@ -83,6 +83,7 @@ class GroupParser {
     while (!atLineEnd()) {
       char ch = peek();
       if (isBlank(ch) || ch == ',' || ch == ';' || ch == '=' || ch == '\\' || ch == '"') break;
+      if (ch == ')' && inParenthesisedList_) break;
       if (ch == ':') {
         if (c_.pos + 1 < text().size() && text()[c_.pos + 1] == ':') {
           s += "::";
@@ -125,6 +126,8 @@ class GroupParser {
   std::vector<NameCandidate> tableCandidates_;
   bool requireArguments_;  // parseStatementGroup's requireArguments
   Cursor c_;
+  // Inside a parenthesised value list, e.g. INPUTS=(PRELOAD:REACTION_FORCE): ')' ends a token.
+  bool inParenthesisedList_ = false;
   // Arguments written in the current statement, valid or not: a required argument that was
   // written with a bad value has been diagnosed already and is not "missing".
   std::vector<std::string> writtenArguments_;

@@ -121,6 +121,7 @@ int ConstraintSet::grueblerCount(const model::Model& model) {
   count -= static_cast<int>(model.motions.size());
   count -= static_cast<int>(model.couplers.size() + model.gears.size());
   count -= static_cast<int>(model.gcons.size());
+  count -= 2 * static_cast<int>(model.ptcvs.size());  // PTCV removes two (docs/theory.md §5d)
   return count;
 }
 
@@ -214,6 +215,36 @@ ConstraintEquation generalEquation(const model::Model& model, int index) {
   e.iMarker = markers[0];
   e.jMarker = markers[1];
   e.moreMarkers.assign(markers.begin() + 2, markers.end());
+  return e;
+}
+
+// Normal equation n (0, 1) of PTCV k (docs/theory.md §5d). The helper axis is the RM axis least
+// aligned with the curve's tangents over the whole curve (sampled), so the normals n_1 = h x t,
+// n_2 = t x n_1 stay defined and smooth along it; the nearest-point search samples the curve
+// 4 times per MATRIX row, at least 64 times.
+ConstraintEquation pointCurveEquation(const model::Model& model, int k, int n) {
+  const model::PointCurve& p = model.ptcvs[k];
+  const model::CurveData& data = model.curves[p.curve];
+  ConstraintEquation e;
+  e.kind = ConstraintEquation::Kind::PointCurve;
+  e.iMarker = p.iMarker;
+  e.jMarker = p.rmMarker;
+  e.ptcv = k;
+  e.curve = data.curve.get();
+  const auto matrix = model.matrixIndex.find(data.matrixId);
+  const int rows =
+      matrix == model.matrixIndex.end() ? 16 : static_cast<int>(model.matrices[matrix->second].values.rows());
+  e.curveSamples = std::max(64, 4 * rows);
+  double worst[3] = {0.0, 0.0, 0.0};
+  for (int s = 0; s <= e.curveSamples; ++s) {
+    const V3<double> t = curveDerivative(*e.curve, -1.0 + 2.0 * s / e.curveSamples, 1);
+    const double length = norm(t);
+    if (length == 0.0) continue;
+    for (int a = 0; a < 3; ++a) worst[a] = std::max(worst[a], std::abs(t[a]) / length);
+  }
+  e.axisJ = static_cast<int>(std::min_element(worst, worst + 3) - worst);
+  e.axisI = n;
+  e.label = n == 0 ? "N1.(I-curve)" : "N2.(I-curve)";
   return e;
 }
 
@@ -377,6 +408,8 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
     eqs_.push_back(gearEquation(model, k));
   for (int k = 0; k < static_cast<int>(model.gcons.size()); ++k)
     eqs_.push_back(generalEquation(model, k));
+  for (int k = 0; k < static_cast<int>(model.ptcvs.size()); ++k)
+    for (int n = 0; n < 2; ++n) eqs_.push_back(pointCurveEquation(model, k, n));
   // Coupled rotation terms in equation order: their committed angles' places in the run state.
   int slot = 0;
   for (ConstraintEquation& e : eqs_)
@@ -406,6 +439,8 @@ std::string ConstraintSet::describe(int k, const model::Model& model) const {
     return "COUPLER/" + std::to_string(model.couplers[e.coupler].id) + " equation " + e.label;
   if (e.gear >= 0)
     return "GEAR/" + std::to_string(model.gears[e.gear].id) + " equation " + e.label;
+  if (e.ptcv >= 0)
+    return "PTCV/" + std::to_string(model.ptcvs[e.ptcv].id) + " equation " + e.label;
   if (e.gcon >= 0)
     return "GCON/" + std::to_string(model.gcons[e.gcon].id) + " equation " + e.label;
   return "MOTION/" + std::to_string(model.motions[e.motion].id) + " equation " + e.label;

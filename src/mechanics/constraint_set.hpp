@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/curve_projection.hpp"
 #include "common/vec3.hpp"
 #include "mechanics/pose.hpp"
 #include "model/model.hpp"
@@ -29,6 +30,9 @@ struct ConstraintEquation {
     Screw,              // z_J.(P_I - P_J) - ratio * (angle of x_I about z_J from x_J) - offset
     Coupled,            // sum of terms scale * (joint displacement - reference): COUPLER, GEAR
     General,            // a GCON's FUNCTION of marker measures (general_constraint.hpp)
+    PointCurve,         // PTCV: normal component `axisI` (0, 1) of I's offset from the
+                        // nearest point of `curve` in J's (RM's) frame; helper axis `axisJ`
+                        // (common/curve_projection.hpp, docs/theory.md §5d)
   };
   // Coupled: one joint displacement of marker pair `pair` (0: iMarker, jMarker; 1, 2: the pairs
   // in moreMarkers), the rotation of x_I about z_J from x_J or the translation z_J.(P_I - P_J),
@@ -58,6 +62,10 @@ struct ConstraintEquation {
   int coupler = -1;  // index into Model::couplers, or -1
   int gear = -1;     // index into Model::gears, or -1
   int gcon = -1;     // index into Model::gcons, or -1
+  int ptcv = -1;     // index into Model::ptcvs, or -1
+  // PointCurve: the curve (owned by the Model) and the samples of its nearest-point search.
+  const BSplineCurve* curve = nullptr;
+  int curveSamples = 0;
   // General: the GCON's bound FUNCTION (owned by the Model) and, per measure k, the frame slots
   // (indices s of eq.marker(s)) of its markers i, j and k; -1 = ground.
   const model::BoundExpression* function = nullptr;
@@ -202,6 +210,9 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
     }
     case K::General:
       return generalConstraintValue(eq, frames);
+    case K::PointCurve:
+      return pointCurveResiduals(*eq.curve, eq.axisJ, eq.curveSamples,
+                                 j.a.tmul(i.p - j.p))[eq.axisI];
   }
   return S(0.0);
 }

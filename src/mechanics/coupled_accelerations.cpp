@@ -27,6 +27,8 @@ bool netForceReadsReactions(const model::Model& m, const model::Measure& ms) {
     if (acts(j.iMarker, j.jMarker)) return true;
   for (const model::Motion& j : m.motions)
     if (acts(j.iMarker, j.jMarker)) return true;
+  for (const model::PointCurve& p : m.ptcvs)
+    if (acts(p.iMarker, p.rmMarker)) return true;
   return !m.gcons.empty();  // conservative: a GCON's markers are those its FUNCTION reads
 }
 

@@ -62,6 +62,27 @@ void markerAcceleration(const model::Model& m, const StateLayout& l, int marker,
   acceleration = vdot + cross(alpha, s) + centripetal;
 }
 
+// Second derivatives taken in the frame of marker l (the l argument of ACCX..WDTM;
+// docs/theory.md §11b): with d = p_I - p_J, w = w_I - w_J and w_l, alpha_l the angular velocity
+// and acceleration of l in ground, d''_l = d'' - alpha_l x d - 2 w_l x d' + w_l x (w_l x d) and
+// w'_l = w' - w_l x w. `acc` and `wdt` hold the ground derivatives d'' and w' on entry.
+template <class T>
+void inFrameOfL(const model::Model& m, const StateLayout& l, const model::Measure& ms,
+                const T* y, const T* yp, V3<T>& acc, V3<T>& wdt) {
+  auto state = [&](int marker) {
+    if (marker >= 0) return markerState(m, l, marker, y);
+    MarkerState<T> g;
+    g.p = g.pdot = g.w = V3<T>(T(0.0), T(0.0), T(0.0));
+    return g;
+  };
+  const MarkerState<T> i = state(ms.i), j = state(ms.j), f = state(ms.l);
+  V3<T> af, alphaf;
+  markerAcceleration(m, l, ms.l, y, yp, af, alphaf);
+  const V3<T> d = i.p - j.p, dd = i.pdot - j.pdot, w = i.w - j.w;
+  acc = acc - cross(alphaf, d) - T(2.0) * cross(f.w, dd) + cross(f.w, cross(f.w, d));
+  wdt = wdt - cross(f.w, w);
+}
+
 // The derivative of equation eq's geometry along virtual displacement `dir` of the part that
 // carries marker slot `side` (0-2: translation along ground axes, 3-5: rotation about the part's
 // own axes; `origin`, `axes` that part's frame): A <- A (I + [e_k] x) turns the part's points
@@ -176,7 +197,8 @@ bool dynamicMeasure(const model::Model& m, const StateLayout& l, const model::Me
       // Time derivatives in ground: relative accelerations are plain differences.
       markerAcceleration(m, l, ms.i, y, yp, ai, alphai);
       markerAcceleration(m, l, ms.j, y, yp, aj, alphaj);
-      const V3<T> acc = ai - aj, wdt = alphai - alphaj;
+      V3<T> acc = ai - aj, wdt = alphai - alphaj;
+      if (ms.l >= 0) inFrameOfL(m, l, ms, y, yp, acc, wdt);
       switch (ms.kind) {
         case K::ACCX: *out = dot(acc, k.c[0]); break;
         case K::ACCY: *out = dot(acc, k.c[1]); break;

@@ -133,6 +133,7 @@ class PatternBuilder {
         addMarkerKinematics(d, ms.i);
         addMarkerKinematics(d, ms.j);
         addMarkerKinematics(d, ms.k);
+        addMarkerKinematics(d, ms.l);  // the derivative frame (-1 for ground: no columns)
         return;
       // Accelerations read y' of the same bodies' velocity entries: one column stands for
       // y_c and y'_c, so the marker kinematics columns cover them (dynamic_measures.hpp).
@@ -141,6 +142,7 @@ class PatternBuilder {
         addMarkerKinematics(d, ms.i);
         addMarkerKinematics(d, ms.j);
         addMarkerKinematics(d, ms.k);
+        addMarkerKinematics(d, ms.l);  // the derivative frame (-1 for ground: no columns)
         return;
       case K::JointForce: case K::MotionForce: case K::JPrimForce:
         addReaction(d, ms);
@@ -355,7 +357,7 @@ class PatternBuilder {
       switch (eq.kind) {
         case K::Point: case K::Dot: case K::Along: case K::MotionRotation:
         case K::MotionTranslation: case K::MotionAngle: case K::Convel: case K::RackPin:
-        case K::Screw: case K::Coupled:
+        case K::Screw: case K::Coupled: case K::PointCurve:
           break;  // geometry of the marker frames (and a function of time)
         default:
           d.all = true;  // an equation kind whose reads are not known here

@@ -37,7 +37,10 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
   const M3<T> k = ms.k >= 0 ? markerState(m, l, ms.k, y).a
                             : M3<T>::from(Eigen::Matrix3d::Identity().eval());
   const V3<T> d = i.p - j.p;
-  const V3<T> v = i.pdot - j.pdot;
+  // The time derivative of d in the frame of marker l (ground when absent):
+  // v_l = d' - w_l x d (docs/theory.md §11b). VR does not depend on it.
+  const V3<T> v = ms.l >= 0 ? (i.pdot - j.pdot) - cross(markerState(m, l, ms.l, y).w, d)
+                            : i.pdot - j.pdot;
   const V3<T> w = i.w - j.w;
   switch (ms.kind) {
     case K::DX: *out = dot(d, k.c[0]); return true;
@@ -47,12 +50,13 @@ bool kinematicMeasure(const model::Model& m, const StateLayout& l, const model::
     case K::VX: *out = dot(v, k.c[0]); return true;
     case K::VY: *out = dot(v, k.c[1]); return true;
     case K::VZ: *out = dot(v, k.c[2]); return true;
-    case K::VM: *out = norm(v); return true;
-    case K::VR: *out = dot(v, d) / norm(d); return true;
+    // |v| with a zero derivative at v = 0 (at rest; sqrt's derivative there would be 0/0).
+    case K::VM: *out = valueOf(dot(v, v)) == 0.0 ? T(0.0) : norm(v); return true;
+    case K::VR: *out = dot(i.pdot - j.pdot, d) / norm(d); return true;  // = (v_l . d)/|d|
     case K::WX: *out = dot(w, k.c[0]); return true;
     case K::WY: *out = dot(w, k.c[1]); return true;
     case K::WZ: *out = dot(w, k.c[2]); return true;
-    case K::WM: *out = norm(w); return true;
+    case K::WM: *out = valueOf(dot(w, w)) == 0.0 ? T(0.0) : norm(w); return true;
     case K::PSI: case K::THETA: case K::PHI: {
       // Body 3-1-3 angles of I relative to J from R = A_J^T A_I.
       const M3<T> r = j.a.transpose() * i.a;

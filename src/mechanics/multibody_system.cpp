@@ -391,6 +391,8 @@ std::pair<int, int> MultibodySystem::elementMarkers(ConstraintElement kind, int 
     }
     case ConstraintElement::Gcon:
       return {model_->gcons[element].iMarker, -1};
+    case ConstraintElement::PointCurve:
+      return {model_->ptcvs[element].iMarker, model_->ptcvs[element].rmMarker};
   }
   return {-1, -1};
 }
@@ -407,6 +409,7 @@ void MultibodySystem::elementReaction(ConstraintElement kind, int element, int m
           case ConstraintElement::Coupler: return eq.coupler == element;
           case ConstraintElement::Gear: return eq.gear == element;
           case ConstraintElement::Gcon: return eq.gcon == element;
+          case ConstraintElement::PointCurve: return eq.ptcv == element;
         }
         return false;
       },

@@ -68,6 +68,9 @@ struct Measure {
   int i = -1;  // marker index
   int j = -1;  // marker index, -1 = ground origin/axes
   int k = -1;  // resolution marker, -1 = ground axes
+  // Derivative frame of VX..VZ, VM, VR, ACCX..ACCM, WDTX..WDTM (their l argument):
+  // time derivatives are taken in this marker's frame, -1 = ground (docs/theory.md §11b).
+  int l = -1;
   int element = -1;   // joint/motion/sforce index for force measures
   int atJ = 0;        // force measures: 0 = at I marker, 1 = at J marker
   int component = 0;  // force measures: 1..8; ORIENT: 1..4

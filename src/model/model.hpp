@@ -205,6 +205,18 @@ struct VectorForce {
   SourceLocation where;
 };
 
+// PTCV: marker I's origin stays on CURVE `curve` (index into Model::curves), fixed in the frame
+// of marker RM (docs/theory.md §5d). JFLOAT is the contact marker on RM's part; its pose is not
+// computed (nothing reads it), so requests and functions may not name it.
+struct PointCurve {
+  long id = 0;
+  int iMarker = -1;
+  int jFloat = -1;
+  int rmMarker = -1;
+  int curve = -1;
+  SourceLocation where;
+};
+
 // FRICTION on a joint (docs/theory.md, "Joint friction"; mechanics/friction/): a force and/or
 // torque that opposes the slip of the joint, proportional to an equivalent normal force made of
 // the joint's reaction (multipliers), its preload and arms.
@@ -405,6 +417,7 @@ struct Model {
   std::vector<Coupler> couplers;  // COUPLER
   std::vector<Gear> gears;        // GEAR
   std::vector<GeneralConstraint> gcons;  // GCON
+  std::vector<PointCurve> ptcvs;         // PTCV (point_curve_builder.cpp)
   std::vector<SForce> sforces;
   std::vector<SpringDamper> springDampers;
   std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM

@@ -16,6 +16,7 @@
 #include "model/material_builder.hpp"
 #include "model/motion_builder.hpp"
 #include "model/part_builder.hpp"
+#include "model/point_curve_builder.hpp"
 #include "model/request_builder.hpp"
 #include "model/sensor_builder.hpp"
 #include "model/sforce_builder.hpp"
@@ -43,6 +44,8 @@ const std::set<std::string>& supportedStatements() {
                                           "COUPLER", "GEAR",
                                           // general constraints (general_constraint_builder)
                                           "GCON",
+                                          // point-to-curve (point_curve_builder.cpp)
+                                          "PTCV",
                                           // joint friction (friction_builder.cpp)
                                           "FRICTION",
                                           // user equations (user_equation_builder.cpp)
@@ -73,6 +76,7 @@ struct StatementGroups {
   std::vector<const Statement*> userEquations;  // VARIABLE, DIFF, ARRAY, LSE, TFSISO, ...
   std::vector<const Statement*> couplings;      // COUPLER, GEAR
   std::vector<const Statement*> gcons;          // GCON
+  std::vector<const Statement*> ptcvs;          // PTCV
   std::vector<const Statement*> frictions;      // FRICTION
   std::vector<const Statement*> contacts;       // CONTACT
 };
@@ -129,6 +133,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       groups.couplings.push_back(&s);
     } else if (s.name == "GCON") {
       groups.gcons.push_back(&s);
+    } else if (s.name == "PTCV") {
+      groups.ptcvs.push_back(&s);
     } else if (s.name == "FRICTION") {
       groups.frictions.push_back(&s);
     } else if (s.name == "CONTACT") {
@@ -206,7 +212,8 @@ bool bindGeometricMeasure(const expr::HostCall& call, Measure& m, MarkerOf&& mar
       {"YAW", MeasureKind::YAW},   {"PITCH", MeasureKind::PITCH}, {"ROLL", MeasureKind::ROLL}};
   if (auto it = kinematic.find(call.name); it != kinematic.end()) {
     m.kind = it->second;
-    // Argument pattern F(i [,j] [,k] [,l]); l (the derivative frame) must be ground for now.
+    // Argument pattern F(i [,j] [,k] [,l]): l is the frame in which time derivatives are
+    // taken (docs/theory.md §11b); measures without a time derivative take no l.
     m.i = marker(0, false);
     m.j = marker(1, true);
     bool usesK =
@@ -214,10 +221,16 @@ bool bindGeometricMeasure(const expr::HostCall& call, Measure& m, MarkerOf&& mar
           m.kind == MeasureKind::WM || m.kind == MeasureKind::ACCM || m.kind == MeasureKind::WDTM ||
           (m.kind >= MeasureKind::AX && m.kind <= MeasureKind::ROLL));
     if (usesK) m.k = marker(2, true);
-    size_t lPos = usesK ? 3 : 2;
-    if (call.args.size() > lPos && call.args[lPos] != 0)
-      fail("time derivatives in a moving frame (the l argument) are not supported yet",
-           "Omit the last argument or give 0 so derivatives are taken in ground.");
+    const size_t lPos = usesK ? 3 : 2;
+    // WX..WM, displacements and angles have no l (the expression layer checks their arity).
+    const bool takesL = (m.kind >= MeasureKind::VX && m.kind <= MeasureKind::VR) ||
+                        (m.kind >= MeasureKind::ACCX && m.kind <= MeasureKind::WDTM);
+    if (takesL) {
+      m.l = marker(lPos, true);
+    } else if (call.args.size() > lPos && call.args[lPos] != 0) {
+      fail(call.name + " has no time derivative, so it takes no derivative frame (l) argument",
+           "Remove the argument after " + std::string(usesK ? "k" : "j") + ".");
+    }
     if (m.i == -1) fail("the first marker is required", "Give the id of the measured marker.");
     // AX, AY, AZ: cumulative outside GCON (the run state counts the turns,
     // mechanics/expression_run_state.hpp); principal values in a GCON.
@@ -397,7 +410,12 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
       }
       if (m.component < 1 || m.component > 8)
         fail("the component must be 1 to 8", "1 |F|, 2-4 Fx Fy Fz, 5 |T|, 6-8 Tx Ty Tz.");
-    } else if (call.name == "PTCV" || call.name == "CVCV") {
+    } else if (call.name == "PTCV") {
+      // ADAMS too reads PTCV reactions only in REQUESTs and SENSORs (docs/theory.md §5d).
+      fail("reads the reaction of a PTCV, which functions may not read yet",
+           "Read it with REQUEST/id, FORCE, I=<the PTCV's I>, J=<its RM or JFLOAT>.");
+      continue;
+    } else if (call.name == "CVCV") {
       // Read-backs of elements the solver rejects at input (expr4): name the missing element.
       const long eid = call.args.empty() ? 0 : call.args[0];
       fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
@@ -451,6 +469,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildCouplings(groups.couplings, model, diags);
   // GCON (general_constraint_builder.cpp): after every marker exists.
   buildGeneralConstraints(groups.gcons, model, diags);
+  buildPointCurves(groups.ptcvs, model, diags);  // PTCV (point_curve_builder.cpp)
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(groups.forceElements, model, diags);
   // GRAPHICS (graphics_builder.cpp): checked here, after every marker (errors and the kinds

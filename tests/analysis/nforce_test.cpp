@@ -4,7 +4,7 @@
 //   (b) a two-I-marker NFORCE coupling two 1 kg sliders as the chain ground-k-m-k-m (k = 8),
 //       started in its first normal mode, moves at w1^2 = 4 (3 - sqrt 5); its read-backs
 //       NFORCE(id, marker, 4, 0) at both I markers and at J equal -K (q - L) computed by hand
-//       (J: minus their sum);
+//       (J: minus their sum), and REQUEST FORCE between each I marker and J the same;
 //   (c) its Newton matrix against central differences, nonzeros inside the pattern;
 //   (d) wrong MATRIX sizes and markers are refused at the statement.
 
@@ -14,6 +14,7 @@
 #include <cstdio>
 #include <string>
 
+#include "analysis/request_values.hpp"
 #include "common/diagnostics.hpp"
 #include "language/reader.hpp"
 #include "mechanics/jacobian_pattern.hpp"
@@ -75,6 +76,7 @@ std::string chainModel() {
                 "VARIABLE/2, FUNCTION=NFORCE(1,30,4,0)\n"
                 "VARIABLE/3, FUNCTION=NFORCE(1,10,4,0)\n"
                 "VARIABLE/4, FUNCTION=FZ(30)\n"
+                "REQUEST/1, FORCE, I=20, J=10\nREQUEST/2, FORCE, I=30, J=10\n"
                 "END\n",
                 1.0 + a, 2.0 + a * phi);
   return text;
@@ -98,6 +100,12 @@ TEST(NForce, ChainMovesInItsNormalModeAndReadsBackKTimesDisplacement) {
     EXPECT_NEAR(run.variable(1), f2, 1e-11) << t;
     EXPECT_NEAR(run.variable(2), -(f1 + f2), 1e-11) << t;
     EXPECT_NEAR(run.variable(3), f2, 1e-9) << t;  // FZ(30): the NFORCE is all that loads 30 in z
+    // REQUEST FORCE between an I marker and J: the NFORCE's load on that I marker (plus the
+    // translational joint's reaction, zero along its axis z).
+    const auto r1 = requestColumns(run.system(), m.requests[0], t, run.y(), run.yp());
+    const auto r2 = requestColumns(run.system(), m.requests[1], t, run.y(), run.yp());
+    EXPECT_NEAR(r1[3], f1, 1e-9) << t;
+    EXPECT_NEAR(r2[3], f2, 1e-9) << t;
     worstForce =
         std::max({worstForce, std::abs(run.variable(0) - f1), std::abs(run.variable(1) - f2)});
     // BDF at ERROR = 1e-9 over 5 s: asserted 1e-6.

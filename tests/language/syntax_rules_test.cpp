@@ -87,6 +87,27 @@ TEST(SyntaxRules, AValueListMayStartOnTheContinuationLine) {
   EXPECT_EQ(r.at(0).find("QP")->values.at(2).number, 3.0);
 }
 
+// ADAMS writes keyword lists in parentheses, e.g. FRICTION's INPUTS=(PRELOAD:REACTION_FORCE):
+// the parentheses group the values; an unclosed list is an error at its end.
+TEST(SyntaxRules, AValueListMayBeParenthesised) {
+  auto r = read("FRICTION/1, JOINT=1, INPUTS=(PRELOAD:REACTION_FORCE), MU_STATIC=0.2\n"
+                "MARKER/1, PART=1, QP=( 1, 2 ,3 )\nEND\n");
+  EXPECT_EQ(r.diagnostics, Lines{});
+  const auto* inputs = r.at(0).find("INPUTS");
+  ASSERT_NE(inputs, nullptr);
+  ASSERT_EQ(inputs->values.size(), 2u);
+  EXPECT_EQ(inputs->values[0].text, "PRELOAD");
+  EXPECT_EQ(inputs->values[1].text, "REACTION_FORCE");
+  EXPECT_EQ(r.at(0).find("MU_STATIC")->values.at(0).number, 0.2);
+  EXPECT_EQ(r.at(1).find("QP")->values.at(2).number, 3.0);
+  auto bad = read("FRICTION/1, JOINT=1, INPUTS=(PRELOAD:REACTION_FORCE\nEND\n");
+  ASSERT_EQ(bad.diagnostics.size(), 1u);
+  EXPECT_NE(bad.diagnostics[0].find("t.adm:2:52: error: FRICTION/1: the list of INPUTS values "
+                                    "is not closed"),
+            std::string::npos)
+      << bad.diagnostics[0];
+}
+
 // §4.3.4: a comment may sit in the middle of an argument.
 TEST(SyntaxRules, ACommentLineMaySitInsideAnArgument) {
   auto r = read("MARKER/1, PART=1, QP=1,\n! the y and z coordinates\n, 2, 3\nEND\n");

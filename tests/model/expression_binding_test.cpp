@@ -85,11 +85,14 @@ TEST(ExpressionBinding, ReadBacksOfRejectedElementsNameTheElement) {
     missingFriction = missingFriction || e.find("FRICTION: FRICTION/6 does not exist") !=
                                              std::string::npos;
   EXPECT_TRUE(missingFriction);
-  for (const char* name : {"PTCV/4", "CVCV/5"}) {
-    bool found = false;
-    for (const auto& e : errors) found = found || e.find(std::string("force of ") + name) != std::string::npos;
-    EXPECT_TRUE(found) << name;
+  bool cvcv = false, ptcv = false;
+  for (const auto& e : errors) {
+    cvcv = cvcv || e.find("force of CVCV/5") != std::string::npos;
+    // PTCV is supported; ADAMS too reads its reaction only in requests (docs/theory.md §5d).
+    ptcv = ptcv || e.find("PTCV: reads the reaction of a PTCV") != std::string::npos;
   }
+  EXPECT_TRUE(cvcv);
+  EXPECT_TRUE(ptcv);
 }
 
 TEST(ExpressionBinding, UserInsideAnExpressionNeedsALoadedSubroutine) {
