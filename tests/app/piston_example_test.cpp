@@ -310,6 +310,18 @@ TEST_F(PistonExample, WritesEveryRequestOfTheDataSet) {
   }
 }
 
+// The run's summary names every output file on disk: the data set has OUTPUT/REQSAVE and
+// RESULTS, so the .msg, .req and .res (docs/output-files.md).
+TEST_F(PistonExample, SummaryNamesTheMessageRequestAndResultsFiles) {
+  const std::string console = tailOf(*outDir_ / "console.txt", 4000);
+  const std::string dir = outDir_->string();
+  EXPECT_NE(console.find("  outputs:  " + dir + "/piston.msg, " + dir + "/piston.req, " + dir +
+                         "/piston.res\n"),
+            std::string::npos)
+      << console;
+  EXPECT_TRUE(fs::exists(*outDir_ / "piston.res"));
+}
+
 // REQUEST/11: DISPLACEMENT of the piston CM marker 0401 relative to ground marker 0101.
 TEST_F(PistonExample, PistonDisplacementMatchesClosedForm) {
   const double xRange = 2.0 * kCrankRadius;  // the CM moves between 7 and 11
