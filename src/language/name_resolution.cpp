@@ -3,13 +3,11 @@
 #include <algorithm>
 #include <cctype>
 
+#include "common/ascii_case.hpp"
+
 namespace openmss::language {
 
-std::string toUpper(std::string_view s) {
-  std::string out(s);
-  for (char& c : out) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return out;
-}
+std::string toUpper(std::string_view s) { return toUpperAscii(s); }
 
 NameResolution resolveName(std::string_view written, const std::vector<NameCandidate>& candidates) {
   NameResolution result;

@@ -4,14 +4,10 @@
 #include <cctype>
 #include <utility>
 
+#include "common/ascii_case.hpp"
+
 namespace openmss::output {
 namespace {
-
-std::string lower(std::string s) {
-  std::transform(s.begin(), s.end(), s.begin(),
-                 [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
-  return s;
-}
 
 // Adds components and entities, numbering ids in the order of the calls.
 class Builder {
@@ -240,10 +236,10 @@ std::string ResultsLayout::mismatch(const OutputFrame& f) const {
 
 ResultsUnits resultsUnits(const model::Units& units) {
   ResultsUnits u;
-  u.length = lower(units.length);
-  u.mass = units.mass == "KILOGRAM" ? "kg" : lower(units.mass);
-  u.time = units.time == "SECOND" ? "sec" : lower(units.time);
-  u.force = lower(units.force);
+  u.length = toLowerAscii(units.length);
+  u.mass = units.mass == "KILOGRAM" ? "kg" : toLowerAscii(units.mass);
+  u.time = units.time == "SECOND" ? "sec" : toLowerAscii(units.time);
+  u.force = toLowerAscii(units.force);
   return u;
 }
 

@@ -8,6 +8,7 @@
 #include <limits>
 #include <mutex>
 
+#include "common/ascii_case.hpp"
 #include "user/element_call.hpp"
 #include "user/openmss_usersub.h"
 #include "user/routine_guard.hpp"
@@ -49,14 +50,6 @@ KindInfo info(RoutineKind k) {
   return {"?", 1, true};
 }
 
-std::string upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 // ADAMS tells a C-style routine by its mixed-case name: first letter upper case, no other
 // upper-case letter (docs/user-subroutines.md, "Loading").
 bool mixedCase(const std::string& n) {
@@ -453,12 +446,14 @@ std::shared_ptr<ElementRoutine> loadElementRoutine(RoutineKind kind, const Eleme
   // Symbols tried, in order, with the convention each implies (docs/user-subroutines.md).
   std::vector<std::pair<std::string, bool>> tried;  // (symbol, fortran)
   if (routine.name.empty()) {
-    const std::string c = adamsName.substr(0, 1) + lower(adamsName.substr(1));
-    tried = {
-        {c, false}, {lower(adamsName) + "_", true}, {adamsName, true}, {lower(adamsName), true}};
+    const std::string c = adamsName.substr(0, 1) + toLowerAscii(adamsName.substr(1));
+    tried = {{c, false},
+             {toLowerAscii(adamsName) + "_", true},
+             {adamsName, true},
+             {toLowerAscii(adamsName), true}};
   } else {
     const std::string& n = routine.name;
-    tried = {{n, !mixedCase(n)}, {lower(n) + "_", true}, {upper(n), true}};
+    tried = {{n, !mixedCase(n)}, {toLowerAscii(n) + "_", true}, {toUpperAscii(n), true}};
   }
   for (const auto& [name, fortran] : tried)
     if (void* p = lib->symbol(name)) {

@@ -6,6 +6,7 @@
 #include <cstring>
 #include <limits>
 
+#include "common/ascii_case.hpp"
 #include "user/element_call.hpp"
 #include "user/gse_call.hpp"
 #include "user/openmss_usersub.h"
@@ -36,15 +37,6 @@ class ContextScope {
  private:
   CallContext* saved_;
 };
-
-std::string upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
-std::string lower(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return s;
-}
 
 class LoadedGse final : public GseRoutines {
  public:
@@ -212,7 +204,8 @@ std::shared_ptr<const GseRoutines> loadGseRoutines(const GseDescription& descrip
       if (void* p = lib->symbol(n)) return p;
     if (!required) return nullptr;
     std::string fortran;
-    for (const std::string& n : {upper(tried[0]), lower(tried[0]), lower(tried[0]) + "_"})
+    for (const std::string& n :
+         {toUpperAscii(tried[0]), toLowerAscii(tried[0]), toLowerAscii(tried[0]) + "_"})
       if (lib->symbol(n)) fortran = n;
     errors.push_back("user library " + lib->path() + " exports no routine " + tried[0] +
                      (fortran.empty() ? std::string()
@@ -253,7 +246,7 @@ void gseSysary(const char* fncnam, const int* ipar, int nsize, double* states, i
                int* errflg) {
   *errflg = 1;
   *nstates = 0;
-  if (!current || !fncnam || upper(fncnam) != "ARRAY" || nsize < 1) return;
+  if (!current || !fncnam || toUpperAscii(fncnam) != "ARRAY" || nsize < 1) return;
   int size = 0;
   bool zeros = false;
   const double* v = current->gse->arrayValues(ipar[0], size, zeros);
@@ -266,7 +259,7 @@ void gseSysary(const char* fncnam, const int* ipar, int nsize, double* states, i
 void gseSysfnc(const char* fncnam, const int* ipar, int nsize, double* state, int* errflg) {
   *errflg = 1;
   *state = 0.0;
-  if (!current || !fncnam || upper(fncnam) != "ARYVAL" || nsize < 2) return;
+  if (!current || !fncnam || toUpperAscii(fncnam) != "ARYVAL" || nsize < 2) return;
   int size = 0;
   bool zeros = false;
   const double* v = current->gse->arrayValues(ipar[0], size, zeros);
@@ -278,7 +271,8 @@ void gseSysfnc(const char* fncnam, const int* ipar, int nsize, double* state, in
 void gseSyspar(const char* fncnam, const int* ipar, int nsize, const double* partials, int npartl,
                int* errflg) {
   *errflg = 1;
-  if (!current || !current->partials || !fncnam || upper(fncnam) != "ARRAY" || nsize < 1) return;
+  if (!current || !current->partials || !fncnam || toUpperAscii(fncnam) != "ARRAY" || nsize < 1)
+    return;
   const GseDescription& d = current->gse->description();
   const int rows = current->rows;
   std::optional<std::vector<double>>* block = nullptr;
@@ -325,7 +319,7 @@ void gseTimget(double* time) { *time = current ? current->args->time : 0.0; }
 
 void gseErrmes(int errflg, const char* mesage, int id, const char* endflg) {
   if (!errflg) return;
-  const std::string end = endflg ? upper(endflg) : "";
+  const std::string end = endflg ? toUpperAscii(endflg) : "";
   const std::string text = std::string("ERRMES from the routine of GSE/") + std::to_string(id) +
                            ": " + (mesage ? mesage : "");
   if (current && (end.rfind("STOP", 0) == 0 || end.rfind("ERROR", 0) == 0)) {

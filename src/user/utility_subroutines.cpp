@@ -10,6 +10,7 @@
 #include <cstdio>
 #include <string>
 
+#include "common/ascii_case.hpp"
 #include "user/element_call.hpp"
 #include "user/gse_call.hpp"
 #include "user/openmss_usersub.h"
@@ -17,11 +18,8 @@
 namespace {
 
 namespace d = openmss::user::detail;
+using openmss::toUpperAscii;
 
-std::string upper(std::string s) {
-  for (char& c : s) c = static_cast<char>(std::toupper(static_cast<unsigned char>(c)));
-  return s;
-}
 // A FORTRAN CHARACTER argument: `length` characters, blank-padded, no terminator.
 std::string fortranText(const char* text, std::size_t length) {
   if (!text) return {};
@@ -30,7 +28,7 @@ std::string fortranText(const char* text, std::size_t length) {
   return s;
 }
 std::string trimmedUpper(const char* text) {
-  std::string s = text ? upper(text) : "";
+  std::string s = text ? toUpperAscii(text) : "";
   while (!s.empty() && s.back() == ' ') s.pop_back();
   return s;
 }
@@ -50,7 +48,7 @@ void errmes(int errflg, const std::string& message, int id, const std::string& e
     return;
   }
   const std::string text = "ERRMES (id " + std::to_string(id) + "): " + message;
-  if (d::elementCallActive() && stops(upper(endflg))) {
+  if (d::elementCallActive() && stops(toUpperAscii(endflg))) {
     d::elementFatal(text);
     return;
   }
@@ -127,19 +125,20 @@ void c_usrmes(int msgflg, const char* mesage, int id, const char* msgtyp) {
 
 void sysfnc_(const char* fncnam, const int* ipar, const int* nsize, double* state, int* errflg,
              std::size_t lfncnam) {
-  sysfnc(upper(fortranText(fncnam, lfncnam)), ipar, *nsize, state, errflg);
+  sysfnc(toUpperAscii(fortranText(fncnam, lfncnam)), ipar, *nsize, state, errflg);
 }
 
 void sysary_(const char* fncnam, const int* ipar, const int* nsize, double* states, int* nstates,
              int* errflg, std::size_t lfncnam) {
-  sysary(upper(fortranText(fncnam, lfncnam)), ipar, *nsize, states, nstates, errflg);
+  sysary(toUpperAscii(fortranText(fncnam, lfncnam)), ipar, *nsize, states, nstates, errflg);
 }
 
 void syspar_(const char* fncnam, const int* ipar, const int* nsize, const double* partials,
              const int* npartl, int* errflg, std::size_t lfncnam) {
-  *errflg = d::elementSyspar(upper(fortranText(fncnam, lfncnam)), ipar, *nsize, partials, *npartl)
-                ? 0
-                : 1;
+  *errflg =
+      d::elementSyspar(toUpperAscii(fortranText(fncnam, lfncnam)), ipar, *nsize, partials, *npartl)
+          ? 0
+          : 1;
 }
 
 void adams_needs_partials_(int* eval_jac) { c_adams_needs_partials(eval_jac); }
