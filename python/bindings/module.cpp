@@ -9,6 +9,7 @@
 
 #include "api/model_info.hpp"
 #include "api/run.hpp"
+#include "variant_run.hpp"
 
 namespace py = pybind11;
 using namespace openmss::api;
@@ -139,4 +140,20 @@ PYBIND11_MODULE(_native, m) {
       py::arg("path"), py::arg("outdir"), py::arg("end"), py::arg("dtout"), py::arg("steps"),
       py::arg("integrator"), py::arg("error"), py::arg("prefix"),
       "Simulate a data set (SIMULATE/TRANSIENT) into outdir (a dict)");
+  m.def(
+      "run_variant",
+      [](const std::string& model, const std::string& outdir,
+         const std::vector<std::string>& overrides, double end, long steps, double dtout) {
+        openmss::pybind::VariantRun r;
+        {
+          py::gil_scoped_release release;
+          std::lock_guard<std::mutex> lock(runMutex);
+          r = openmss::pybind::runVariant(model, outdir, overrides, end, steps, dtout);
+        }
+        return py::make_tuple(r.exitStatus, r.errorText);
+      },
+      py::arg("model"), py::arg("outdir"), py::arg("overrides"), py::arg("end") = 1.0,
+      py::arg("steps") = 100, py::arg("dtout") = 0.0,
+      "As `openmss run MODEL --quiet --outdir DIR --set ...` in this process, for a design "
+      "study's variant: (exit status, standard error text)");
 }

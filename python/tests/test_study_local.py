@@ -1,5 +1,6 @@
 """A design study on a LocalCluster: an undamped oscillator whose outputs have a closed form,
-the same table for one and two workers, and a rerun that runs only the missing variants."""
+the same table for two worker processes and one thread worker, and a rerun that runs only
+the missing variants."""
 
 import math
 
@@ -76,9 +77,11 @@ def test_outputs_match_the_closed_form(study):
 def test_one_worker_gives_the_same_table_and_a_rerun_runs_only_what_is_missing(study):
     tmp, out, _ = study
     reference = (out / "results.csv").read_bytes()
-    # One worker, from the command line: byte-for-byte the same table.
+    # One worker, a thread of the study's process (--threads), from the command line:
+    # byte-for-byte the same table as two worker processes.
     one = tmp / "one"
-    r = run_cli(["run", tmp / "osc.yaml", "--workers", "1", "--out", one, "--no-progress"])
+    r = run_cli(["run", tmp / "osc.yaml", "--workers", "1", "--threads", "--out", one,
+                 "--no-progress"])
     assert r.returncode == 0, r.stderr
     assert "6 variants (6 run, 0 already done): 6 ok" in r.stdout
     assert (one / "results.csv").read_bytes() == reference

@@ -1,4 +1,5 @@
-"""``python3 -m openmss.study run study.yaml [--scheduler ADDRESS] [--workers N] [--out DIR]``
+"""``python3 -m openmss.study run study.yaml [--scheduler ADDRESS] [--workers N] [--threads]
+[--in-process] [--out DIR]``
 (also ``openmss study …``): runs a design study (docs/studies.md).
 
 Exit status: 0 when every variant has a result (failed variants are results: their status
@@ -26,6 +27,13 @@ def main(argv=None) -> int:
     run.add_argument("--scheduler", help="address of a running Dask scheduler "
                      "(default: a LocalCluster on this machine)")
     run.add_argument("--workers", type=int, help="LocalCluster workers (default: CPU count)")
+    run.add_argument("--threads", action="store_true",
+                     help="LocalCluster workers as threads of this process (quicker to start, "
+                     "slower per variant) instead of processes")
+    run.add_argument("--in-process", action="store_true",
+                     help="run each variant's solver inside its worker (the extension) instead "
+                     "of as a child process: no start-up per variant, but no timeout, and a "
+                     "crash takes the worker down")
     run.add_argument("--out", help="output folder (default: ./<study file name>-study)")
     run.add_argument("--binary", help="the openmss program (default: the build tree's)")
     run.add_argument("--no-progress", action="store_true", help="no progress bar")
@@ -49,12 +57,17 @@ def main(argv=None) -> int:
         print("openmss study: --workers is a positive count of LocalCluster workers "
               "(not given with --scheduler)", file=sys.stderr)
         return 64
+    if args.threads and args.scheduler:
+        print("openmss study: --threads chooses the LocalCluster's workers (not given with "
+              "--scheduler)", file=sys.stderr)
+        return 64
     out = Path(args.out) if args.out else Path.cwd() / f"{Path(args.study).stem}-study"
     try:
         report = run_study(study, out, scheduler=args.scheduler, workers=args.workers,
                            binary=args.binary, progress=False if args.no_progress else None,
-                           plot=not args.no_plot)
-    except (FileNotFoundError, ConnectionError) as e:
+                           plot=not args.no_plot, processes=not args.threads,
+                           in_process=args.in_process)
+    except (FileNotFoundError, ConnectionError, ValueError) as e:
         print(f"openmss study: error: {e}", file=sys.stderr)
         return 1
     except KeyboardInterrupt:

@@ -19,7 +19,7 @@ from pathlib import Path
 from .._core import binary as default_binary
 from .design import variants as make_variants
 from .plot import main_effects
-from .runner import run_variant
+from .runner import run_variant, worker_ready
 from .spec import Study
 from .store import TABLE, load_result, save_result, study_key, table_text, variant_dir, \
     variant_key
@@ -35,8 +35,31 @@ class Report:
     statuses: dict  # status -> count
 
 
-def _client(scheduler: str | None, workers: int | None):
+def local_cluster(workers: int | None = None, processes: bool = True):
+    """A LocalCluster on this machine and its client: ``workers`` workers (default: the CPU
+    count) of one thread each. ``processes``: each worker a process of its own (started by
+    Dask's nanny with the spawn method, so nothing of this process is inherited), so that
+    the Python part of each variant (starting the solver, reading its request file, the
+    task's round trip) runs in parallel; thread workers share this process and its GIL, but
+    start in a fraction of a second (docs/studies.md, "Workers")."""
+    import dask
     from distributed import Client, LocalCluster
+
+    with dask.config.set({"distributed.worker.multiprocessing-method": "spawn"}):
+        cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
+                               processes=processes, dashboard_address=None,
+                               silence_logs=logging.ERROR)
+    return Client(cluster), cluster
+
+
+def warm(client) -> int:
+    """Imports the task's module on every worker of ``client`` (a benchmark times the study
+    apart from that one-off cost); the number of workers."""
+    return len(client.run(worker_ready))
+
+
+def _client(scheduler: str | None, workers: int | None, processes: bool):
+    from distributed import Client
 
     if scheduler:
         try:
@@ -44,21 +67,27 @@ def _client(scheduler: str | None, workers: int | None):
         except (OSError, TimeoutError) as e:
             raise ConnectionError(f"cannot connect to the Dask scheduler {scheduler}: {e}") \
                 from None
-    # Each task runs the solver as a subprocess and its worker thread only waits for it (the
-    # GIL is released), so the workers are threads of this process: one solver per worker,
-    # without the seconds that starting worker processes takes.
-    cluster = LocalCluster(n_workers=workers or os.cpu_count() or 1, threads_per_worker=1,
-                           processes=False, dashboard_address=None, silence_logs=logging.ERROR)
-    return Client(cluster), cluster
+    return local_cluster(workers, processes)
 
 
 def run_study(study: Study, out: Path, scheduler: str | None = None, workers: int | None = None,
               binary: str | None = None, progress: bool | None = None,
-              plot: bool = True) -> Report:
+              plot: bool = True, processes: bool = True, client=None,
+              in_process: bool = False) -> Report:
+    """Runs the variants of ``study`` that ``out`` holds no result for and writes the table
+    (and the plot). The cluster: ``client`` when given (a distributed.Client the caller
+    owns and closes), else the scheduler at ``scheduler``, else a LocalCluster of
+    ``workers`` workers, processes or threads (local_cluster) started and closed here.
+    ``in_process``: each variant's solver run by the extension inside its worker instead of
+    the program as a child process (no start-up per variant; no timeout)."""
     out = Path(out).resolve()
     out.mkdir(parents=True, exist_ok=True)
     binary = str(Path(binary).resolve()) if binary else default_binary()
-    if not Path(binary).is_file():
+    if in_process and study.timeout is not None:
+        raise ValueError(f"{study.path}: timeout: a variant run in the worker's process cannot "
+                         "be stopped; remove the timeout or run the solver as a child process "
+                         "(without --in-process)")
+    if not in_process and not Path(binary).is_file():
         raise FileNotFoundError(f"the openmss program {binary} does not exist: build the "
                                 "project (scripts/build.sh), set OPENMSS_BINARY or use --binary")
     variants = make_variants(study)
@@ -72,8 +101,8 @@ def run_study(study: Study, out: Path, scheduler: str | None = None, workers: in
     missing = [v for v in variants if v.index not in results]
     reused = len(results)
     if missing:
-        _run_missing(study, out, binary, missing, keys, results, scheduler, workers, progress,
-                     reused, len(variants))
+        _run_missing(study, out, binary, missing, keys, results, progress, reused,
+                     len(variants), client or (scheduler, workers, processes), in_process)
     with contextlib.suppress(OSError):
         (out / "variants" / ".work").rmdir()  # the tasks' scratch folders, when all are gone
     table = out / TABLE
@@ -88,17 +117,18 @@ def run_study(study: Study, out: Path, scheduler: str | None = None, workers: in
     return Report(table, png if drawn else None, len(variants), reused, len(missing), statuses)
 
 
-def _run_missing(study, out, binary, missing, keys, results, scheduler, workers, progress,
-                 reused, total):
+def _run_missing(study, out, binary, missing, keys, results, progress, reused, total, where,
+                 in_process):
     from distributed import as_completed
     from tqdm import tqdm
 
     tasks = {v.index: {"index": v.index, "binary": binary, "model": str(study.model),
                        "run": study.run, "overrides": list(v.overrides),
                        "outdir": str(variant_dir(out, v.index)), "outputs": study.outputs,
-                       "timeout": study.timeout} for v in missing}
+                       "timeout": study.timeout, "in_process": in_process} for v in missing}
     by_index = {v.index: v for v in missing}
-    client, cluster = _client(scheduler, workers)
+    owned = isinstance(where, tuple)
+    client, cluster = _client(*where) if owned else (where, None)
     try:
         futures = [client.submit(run_variant, tasks[v.index], pure=False,
                                  key=f"openmss-study-{keys[v.index][:16]}-v{v.index:05d}")
@@ -118,6 +148,7 @@ def _run_missing(study, out, binary, missing, keys, results, scheduler, workers,
                 results[index] = result
                 bar.update(1)
     finally:
-        client.close()
-        if cluster is not None:
-            cluster.close()
+        if owned:
+            client.close()
+            if cluster is not None:
+                cluster.close()

@@ -1,5 +1,6 @@
-"""One variant: the C++ solver run as a subprocess in a folder of its own, its request file
-read and its outputs computed. Runs inside a Dask task (on any worker), so it takes and
+"""One variant: the C++ solver run in a folder of its own (as a child process, or by the
+extension in the worker's process: docs/studies.md), its request file read and its outputs
+computed. Runs inside a Dask task (on any worker), so it takes and
 returns plain data and never raises: every failure becomes the variant's status and message.
 """
 
@@ -49,7 +50,8 @@ def worker_ready() -> int:
 
 def run_variant(task: dict) -> dict:
     """``task``: index, binary, model, run, overrides, outdir, outputs (spec.Output list),
-    timeout. Returns index, status, returncode, message, outputs (name -> float), seconds."""
+    timeout, in_process (the solver run by the extension in this process instead of the
+    program as a child process). Returns index, status, returncode, message, outputs (name -> float), seconds."""
     start = time.monotonic()
     final = Path(task["outdir"])
     # The solver writes into a folder of this attempt, moved into place when it is done: a
@@ -70,22 +72,46 @@ def run_variant(task: dict) -> dict:
     return result
 
 
+def _solve_in_process(task: dict, outdir: Path) -> tuple[int, str]:
+    """The variant run by the extension in this worker (docs/studies.md, "In-process
+    solver"): the exit status and standard-error text `openmss run` would give."""
+    from .._core import _extension
+
+    if _extension is None:
+        raise OSError("the extension openmss._native was not built "
+                      "(cmake -DOPENMSS_PYTHON_EXTENSION=ON)")
+    run = task["run"]
+    return _extension.run_variant(task["model"], str(outdir), list(task["overrides"]),
+                                  float(run.get("end", 1.0)), int(run.get("steps", 100)),
+                                  float(run.get("dtout", 0.0)))
+
+
+def _solve(task: dict, outdir: Path) -> tuple[int, str]:
+    """(exit status, stderr) of `openmss run` on the variant; raises TimeoutExpired, OSError."""
+    if task.get("in_process"):
+        return _solve_in_process(task, outdir)
+    cmd = command(task["binary"], task["model"], task["run"], task["overrides"], str(outdir))
+    proc = subprocess.run(cmd, cwd=outdir, capture_output=True, text=True,
+                          timeout=task.get("timeout"), env={**os.environ, "LC_ALL": "C"})
+    return proc.returncode, proc.stderr
+
+
 def _run(task: dict, outdir: Path) -> dict:
     result = {"index": task["index"], "status": "", "returncode": None, "message": "",
               "outputs": {}, "seconds": 0.0}
-    cmd = command(task["binary"], task["model"], task["run"], task["overrides"], str(outdir))
     try:
-        proc = subprocess.run(cmd, cwd=outdir, capture_output=True, text=True,
-                              timeout=task.get("timeout"), env={**os.environ, "LC_ALL": "C"})
+        returncode, stderr = _solve(task, outdir)
     except subprocess.TimeoutExpired:
         result.update(status="timeout", message=f"no result after {task['timeout']:g} s")
-    except OSError as e:
-        result.update(status="crashed", message=f"cannot run {task['binary']}: {e.strerror}")
+    except (OSError, RuntimeError) as e:  # RuntimeError: a C++ exception of the extension
+        what = "the in-process solver" if task.get("in_process") else task["binary"]
+        result.update(status="crashed", message=f"cannot run {what}: "
+                      f"{getattr(e, 'strerror', None) or e}")
     else:
-        result["returncode"] = proc.returncode
-        result["status"] = STATUS.get(proc.returncode, "crashed")
-        if proc.returncode != 0:
-            result["message"] = diagnosis(outdir, proc.stderr) or f"exit status {proc.returncode}"
+        result["returncode"] = returncode
+        result["status"] = STATUS.get(returncode, "crashed")
+        if returncode != 0:
+            result["message"] = diagnosis(outdir, stderr) or f"exit status {returncode}"
         else:
             try:
                 reqs = sorted(outdir.glob("*.req"))
