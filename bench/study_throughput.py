@@ -16,7 +16,7 @@ examples/study/fourbar_motor.yaml (40 variants of a dynamic run of about 0.4 s: 
 solver's work dominates).
 
     PYTHONPATH=build/python /usr/bin/python3 bench/study_throughput.py
-        [--study FILE ...] [--workers 1,2] [--threads]
+        [--study FILE ...] [--workers 1,2] [--threads] [--in-process]
 """
 
 import argparse
@@ -36,39 +36,60 @@ def load() -> str:
         return " ".join(f.read().split()[:3])
 
 
-def measure(study, out, workers, processes):
-    """(start-up seconds, study seconds, report) of one study on a fresh cluster."""
+def measure(study, out, workers, processes, in_process):
+    """(start-up seconds, study seconds, report, CPU seconds) of one study on a fresh
+    cluster. CPU: of this process (the scheduler and the client), of the worker processes
+    and of their children (the solver runs), during the study (not measured for thread
+    workers: one process holds them all)."""
     from openmss.study.execute import local_cluster, run_study, warm
+    from openmss.study.runner import cpu_seconds
+
+    def cpu():
+        if not processes:
+            return None
+        workers_cpu = client.run(cpu_seconds).values()
+        return (sum(cpu_seconds()), sum(w[0] for w in workers_cpu),
+                sum(w[1] for w in workers_cpu))
 
     start = time.monotonic()
     client, cluster = local_cluster(workers, processes=processes)
     try:
         assert warm(client) == workers
+        before = cpu()
         ready = time.monotonic()
-        report = run_study(study, out, progress=False, plot=False, client=client)
+        report = run_study(study, out, progress=False, plot=False, client=client,
+                           in_process=in_process)
         done = time.monotonic()
+        after = cpu()
     finally:
         client.close()
         cluster.close()
-    return ready - start, done - ready, report
+    used = [b - a for a, b in zip(before, after)] if processes else None
+    return ready - start, done - ready, report, used
 
 
-def bench(path, counts, processes, tmp):
+def bench(path, counts, processes, in_process, tmp):
     from openmss.study import load_study
 
     study = load_study(path)
     kind = "process" if processes else "thread"
+    solver = "in the worker (--in-process)" if in_process else "as a child process"
     print(f"{study.name} ({path.relative_to(ROOT) if path.is_relative_to(ROOT) else path}), "
-          f"{kind} workers:", flush=True)
+          f"{kind} workers, solver {solver}:", flush=True)
     steady, tables = {}, {}
     for n in counts:
-        startup, steady[n], report = measure(study, tmp / f"{study.name}-w{n}", n, processes)
+        startup, steady[n], report, used = measure(study, tmp / f"{study.name}-w{n}", n,
+                                                   processes, in_process)
         tables[n] = report.table.read_bytes()
         assert report.ran == report.variants, "a fresh folder runs every variant"
         statuses = ", ".join(f"{c} {s}" for s, c in sorted(report.statuses.items()))
         print(f"  {n} worker(s): start-up {startup:.1f} s; {report.variants} variants "
               f"({statuses}) in {steady[n]:.2f} s = {report.variants / steady[n]:.2f} "
               f"variants/s  [load average {load()}]", flush=True)
+        if used:
+            per = [1e3 * u / report.variants for u in used]
+            print(f"    CPU per variant: scheduler and client {per[0]:.1f} ms, workers "
+                  f"{per[1]:.1f} ms, solver child processes {per[2]:.1f} ms", flush=True)
     base = counts[0]
     for n in counts[1:]:
         print(f"  speed-up {n} vs {base} worker(s), steady state: "
@@ -86,6 +107,8 @@ def main():
     parser.add_argument("--workers", default="1,2", help="worker counts to compare")
     parser.add_argument("--threads", action="store_true",
                         help="thread workers in this process instead of worker processes")
+    parser.add_argument("--in-process", action="store_true",
+                        help="each variant's solver run inside its worker (the extension)")
     args = parser.parse_args()
     # The workers are spawned processes: they find the package on PYTHONPATH.
     package = str(ROOT / "build" / "python")
@@ -98,7 +121,8 @@ def main():
     same = True
     with tempfile.TemporaryDirectory(prefix="openmss-study-bench-") as tmp:
         for path in args.study or STUDIES:
-            same = bench(path.resolve(), counts, not args.threads, Path(tmp)) and same
+            same = bench(path.resolve(), counts, not args.threads, args.in_process,
+                         Path(tmp)) and same
     return 0 if same else 1
 
 

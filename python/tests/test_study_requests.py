@@ -55,5 +55,6 @@ def test_records_at_one_time_keep_the_last_and_a_cut_file_is_refused(tmp_path):
     assert requests[2][1].tolist() == [[0, 1, 2, 3, 4, 5], [10, 11, 12, 13, 14, 15]]
     assert _compare(p) == 2 * 2 * 6
     p.write_text(head + f"   0.00000E+00\n{record}\n")  # REQUEST/2's record missing
-    with pytest.raises(openmss.RequestFileError, match=":10: output step at time .* cut short: no record for REQUEST/2"):
+    with pytest.raises(openmss.RequestFileError,
+                       match=":10: output step at time .* cut short: no record for REQUEST/2"):
         read_requests(p, {1})

@@ -7,6 +7,7 @@ returns plain data and never raises: every failure becomes the variant's status 
 from __future__ import annotations
 
 import os
+import resource
 import shutil
 import subprocess
 import time
@@ -48,10 +49,19 @@ def worker_ready() -> int:
     return os.getpid()
 
 
+def cpu_seconds() -> tuple[float, float]:
+    """CPU time (user + system) of this process and of its finished children (the solver
+    runs), for bench/study_throughput.py's account of where a study's time goes."""
+    me = resource.getrusage(resource.RUSAGE_SELF)
+    kids = resource.getrusage(resource.RUSAGE_CHILDREN)
+    return me.ru_utime + me.ru_stime, kids.ru_utime + kids.ru_stime
+
+
 def run_variant(task: dict) -> dict:
     """``task``: index, binary, model, run, overrides, outdir, outputs (spec.Output list),
     timeout, in_process (the solver run by the extension in this process instead of the
-    program as a child process). Returns index, status, returncode, message, outputs (name -> float), seconds."""
+    program as a child process). Returns index, status, returncode, message, outputs
+    (name -> float), seconds."""
     start = time.monotonic()
     final = Path(task["outdir"])
     # The solver writes into a folder of this attempt, moved into place when it is done: a
