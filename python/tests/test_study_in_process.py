@@ -1,6 +1,6 @@
 """The in-process solver (`openmss study run --in-process`: each variant run by the extension
 openmss._native inside its worker, python/bindings/variant_run.cpp) gives the table of the
-child-process solver byte for byte, and the same .msg files: on the 20-variant four-bar
+child-process solver byte for byte, and the same .msg and .req files: on the 20-variant four-bar
 study (5 variants lock up) and on variants that are input errors (an override the data set
 refuses: the message comes from the .msg; a model that does not exist: from what the program
 prints on standard error, captured in-process)."""
@@ -35,11 +35,12 @@ def test_in_process_runs_give_the_child_process_table_and_messages(tmp_path):
     assert all("kinematic analysis failed" in r["message"] for r in rows(table)
                if r["status"] == "failed")
     compared = 0
-    for msg in sorted((child / "variants").glob("v*/*.msg")):
-        twin = inproc / "variants" / msg.parent.name / msg.name
-        assert twin.read_bytes() == msg.read_bytes(), msg
+    for made in sorted((child / "variants").glob("v*/*.msg")) + \
+            sorted((child / "variants").glob("v*/*.req")):
+        twin = inproc / "variants" / made.parent.name / made.name
+        assert twin.read_bytes() == made.read_bytes(), made
         compared += 1
-    assert compared == 20
+    assert compared == 20 + 20  # a .msg each; a .req each (a lock-up keeps its first steps)
 
 
 def test_input_errors_read_the_same_in_process(tmp_path):
