@@ -10,13 +10,14 @@ when they differ. The speed-up is reported, never asserted: on a machine whose c
 shared the figure says more about the load than about the code, so the load average is
 printed beside it.
 
-The studies (docs/studies.md, "Throughput"): examples/study/piston.yaml (100 variants of a
+Each study runs with the solver as a child process and inside the worker (--in-process),
+unless --solver chooses one. The studies (docs/studies.md, "Throughput"): examples/study/piston.yaml (100 variants of a
 kinematic run of about 0.06 s: the per-variant overhead shows) and
 examples/study/fourbar_motor.yaml (40 variants of a dynamic run of about 0.4 s: the
 solver's work dominates).
 
     PYTHONPATH=build/python /usr/bin/python3 bench/study_throughput.py
-        [--study FILE ...] [--workers 1,2] [--threads] [--in-process]
+        [--study FILE ...] [--workers 1,2] [--threads] [--solver child|in-process|both]
 """
 
 import argparse
@@ -107,8 +108,9 @@ def main():
     parser.add_argument("--workers", default="1,2", help="worker counts to compare")
     parser.add_argument("--threads", action="store_true",
                         help="thread workers in this process instead of worker processes")
-    parser.add_argument("--in-process", action="store_true",
-                        help="each variant's solver run inside its worker (the extension)")
+    parser.add_argument("--solver", choices=("child", "in-process", "both"), default="both",
+                        help="each variant's solver as a child process (openmss run), inside "
+                        "its worker (--in-process, the extension), or each in turn (default)")
     args = parser.parse_args()
     # The workers are spawned processes: they find the package on PYTHONPATH.
     package = str(ROOT / "build" / "python")
@@ -120,9 +122,11 @@ def main():
     print(f"machine: {os.cpu_count()} CPUs, load average {load()} at the start", flush=True)
     same = True
     with tempfile.TemporaryDirectory(prefix="openmss-study-bench-") as tmp:
+        modes = {"child": [False], "in-process": [True], "both": [False, True]}[args.solver]
         for path in args.study or STUDIES:
-            same = bench(path.resolve(), counts, not args.threads, args.in_process,
-                         Path(tmp)) and same
+            for in_process in modes:
+                same = bench(path.resolve(), counts, not args.threads, in_process,
+                             Path(tmp) / ("in-process" if in_process else "child")) and same
     return 0 if same else 1
 
 
