@@ -19,8 +19,9 @@ packages=(
   pybind11-dev python3-dev
   chromium python3-pil  # the viewer's browser test (tests/viewer): headless Chromium, PNG reading
   # Design studies (python/openmss/study, docs/studies.md): Dask (LocalCluster, dask-scheduler,
-  # dask-worker), the study file reader and the progress bar.
-  python3-distributed python3-yaml python3-tqdm
+  # dask-worker), the study file reader and the progress bar; psutil (a Dask dependency) finds
+  # a LocalCluster's worker processes in python/tests/test_study_worker_kill.py.
+  python3-distributed python3-yaml python3-tqdm python3-psutil
 )
 # node and npm install three.js for the viewer (viewer/package-lock.json, `npm ci` at configure
 # time): Debian's, only when no node is on the machine.
