@@ -12,6 +12,7 @@ docs/python.md describes the package."""
 from . import _core
 from .errors import Diagnostic, InputError, OpenMSSError, SolverError
 from .model import Model, run_acf
+from .out import TabularFile, TabularFileError, read_out
 from .req import RequestFile, RequestFileError, read_req
 from .res import ResultsFile, ResultsFileError, read_res
 from .run import Run
@@ -20,5 +21,6 @@ __version__ = _core.version
 
 __all__ = [
     "Diagnostic", "InputError", "Model", "OpenMSSError", "RequestFile", "RequestFileError",
-    "ResultsFile", "ResultsFileError", "Run", "SolverError", "read_req", "read_res", "run_acf",
+    "ResultsFile", "ResultsFileError", "Run", "SolverError", "TabularFile", "TabularFileError",
+    "read_out", "read_req", "read_res", "run_acf",
 ]

@@ -49,7 +49,8 @@ bool AnalysisContext::writeOutputStep(double t, const Eigen::VectorXd& y,
     return false;
   }
   const bool frames = report.wantsFrames();
-  if (!m.output.reqsave && !frames) return true;
+  const bool tabular = report.wantsTabular();
+  if (!m.output.reqsave && !frames && !tabular) return true;
   // The request columns are computed once, for the .req and the snapshot alike.
   OutputFrame frame;
   frame.kind = kind;
@@ -69,6 +70,7 @@ bool AnalysisContext::writeOutputStep(double t, const Eigen::VectorXd& y,
     }
     report.writeRequests(t, rows);
   }
+  if (tabular && !report.writeTabular(frame)) return false;
   if (frames) {
     fillStateOutputs(system, t, y, yp, frame);
     if (!report.writeFrame(frame)) return false;

@@ -72,12 +72,26 @@ void fillStateOutputs(const mechanics::MultibodySystem& s, double t, const Eigen
   reactions(CE::Joint, m.joints.size(), frame.joints);
   reactions(CE::JPrim, m.jprims.size(), frame.jprims);
   reactions(CE::Motion, m.motions.size(), frame.motions);
+  reactions(CE::Coupler, m.couplers.size(), frame.couplers);
+  reactions(CE::Gear, m.gears.size(), frame.gears);
+  reactions(CE::Gcon, m.gcons.size(), frame.gcons);
   const auto n = [](const auto& v) { return static_cast<int>(v.size()); };
   appliedForces(s, ForceElementKind::SForce, n(m.sforces), t, y, yp, frame.sforces);
   appliedForces(s, ForceElementKind::SpringDamper, n(m.springDampers), t, y, yp,
                 frame.springDampers);
   appliedForces(s, ForceElementKind::LinearField, n(m.linearFields), t, y, yp, frame.linearFields);
   appliedForces(s, ForceElementKind::VectorForce, n(m.vectorForces), t, y, yp, frame.vectorForces);
+  appliedForces(s, ForceElementKind::Friction, n(m.frictions), t, y, yp, frame.frictions);
+  appliedForces(s, ForceElementKind::Contact, n(m.contacts), t, y, yp, frame.contacts);
+  // NFORCE loads every I marker and J (mechanics/force_elements.hpp): its entry is J's share.
+  frame.nforces.assign(m.nforces.size(), {});
+  for (int e = 0; e < n(m.nforces); ++e) {
+    std::vector<V3<double>> f, tq;
+    V3<double> fj, tj;
+    s.forceElements().multiPointLoads(e, y.data(), f, tq, fj, tj);
+    frame.nforces[e].force = toEigen(fj);
+    frame.nforces[e].torque = toEigen(tj);
+  }
   const StateLayout& l = s.layout();
   frame.variables.assign(m.variables.size(), 0.0);
   for (std::size_t k = 0; k < m.variables.size(); ++k)
@@ -85,6 +99,26 @@ void fillStateOutputs(const mechanics::MultibodySystem& s, double t, const Eigen
   frame.diffs.assign(m.diffs.size(), 0.0);
   for (std::size_t k = 0; k < m.diffs.size(); ++k)
     frame.diffs[k] = y(l.userDiff(static_cast<int>(k)));
+  // LSE/TFSISO and GSE states are user differential states from firstState on, GSE outputs
+  // user algebraic unknowns from firstOutput on (model/model.hpp).
+  frame.linearStates.clear();
+  for (const model::LinearStateElement& e : m.linearStates) {
+    std::vector<double> x(static_cast<std::size_t>(e.a.rows()));
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] = y(l.userDiff(e.firstState + static_cast<int>(i)));
+    frame.linearStates.push_back(std::move(x));
+  }
+  frame.gseStates.clear();
+  frame.gseOutputs.clear();
+  for (const model::GeneralStateElement& e : m.generalStates) {
+    std::vector<double> x(static_cast<std::size_t>(e.ns)), out(static_cast<std::size_t>(e.no));
+    for (std::size_t i = 0; i < x.size(); ++i)
+      x[i] = y(l.userDiff(e.firstState + static_cast<int>(i)));
+    for (std::size_t i = 0; i < out.size(); ++i)
+      out[i] = y(l.userAlg(e.firstOutput + static_cast<int>(i)));
+    frame.gseStates.push_back(std::move(x));
+    frame.gseOutputs.push_back(std::move(out));
+  }
 }
 
 }  // namespace openmss::analysis

@@ -39,6 +39,12 @@ class RunReport {
   // One output step's snapshot (time, analysis kind, parts, element forces, request columns,
   // user states). False when the writer failed (reported through diagnostic()).
   virtual bool writeFrame(const OutputFrame& /*frame*/) { return true; }
+  // Whether the tabular output file (.out) is written: then every output step's request
+  // columns (all eight, magnitudes included) are handed to writeTabular().
+  virtual bool wantsTabular() const { return false; }
+  // One output step's request columns (frame.requests; the other fields are not filled).
+  // False when the writer failed (reported through diagnostic()).
+  virtual bool writeTabular(const OutputFrame& /*frame*/) { return true; }
   // A transient starts, reaches time t of [t0, end] after `steps` integration steps, and ends
   // (a progress line on a terminal; the defaults ignore them).
   virtual void progressStart() {}

@@ -116,7 +116,8 @@ int printSummary(const commands::Session& s, bool ok) {
   // Only the files that are on disk (a model without requests, or a run that failed before
   // its first output, has no request file).
   std::string outputs;
-  for (const std::string& path : {s.messageFilePath(), s.requestFilePath(), s.resultsFilePath()})
+  for (const std::string& path : {s.messageFilePath(), s.requestFilePath(), s.resultsFilePath(),
+                                   s.tabularFilePath()})
     if (!path.empty() && fs::exists(path)) outputs += (outputs.empty() ? "" : ", ") + path;
   std::printf("  outputs:  %s\n", outputs.empty() ? "(none written)" : outputs.c_str());
   if (!ok) std::printf("  the run did not complete: see the diagnostics above\n");

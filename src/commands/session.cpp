@@ -37,6 +37,9 @@ std::string Session::requestFilePath() const {
 std::string Session::resultsFilePath() const {
   return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".res")).string();
 }
+std::string Session::tabularFilePath() const {
+  return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".out")).string();
+}
 std::string Session::messageFilePath() const {
   return (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".msg")).string();
 }
@@ -78,7 +81,7 @@ void Session::echoCommand(const std::string& text) {
 bool Session::loadModel(const std::string& path, const std::string& outputPrefix) {
   closeResults();  // the previous model's .res (the map is the model's)
   resFailed_ = analysisFailed_ = false;
-  graFailed_ = false;
+  graFailed_ = outFailed_ = false;
   prefix_ = outputPrefix;
   if (!options_.checkOnly) std::filesystem::create_directories(options_.outputDirectory);
   if (!options_.checkOnly && !msg_.open(messageFilePath())) {
@@ -195,6 +198,7 @@ bool Session::simulate(const language::Statement& c) {
   }
   const analysis::AnalysisContext run = context();
   res_.beginAnalysis();  // each SIMULATE is a new <Data> block of the .res
+  out_.beginAnalysis();  // and a new analysis block of the .out
   bool ok = false;
   if (const auto* ic = std::get_if<analysis::InitialConditionsRun>(&*request))
     ok = analysis::runInitialConditions(run, *ic);
@@ -205,6 +209,7 @@ bool Session::simulate(const language::Statement& c) {
   if (!ok) {
     analysisFailed_ = true;
     res_.markFailed();  // TerminationStatus runStatus="Failed" (every step so far is kept)
+    out_.markFailed();
     return false;
   }
   if (state_->halted) stop();  // SENSOR/HALT ends the run as STOP does
@@ -282,6 +287,7 @@ bool Session::writeGraphicsFrame(const analysis::OutputFrame& frame) {
 bool Session::writeFrame(const analysis::OutputFrame& frame) {
   if (model_->output.grsave && !graFailed_ && !writeGraphicsFrame(frame)) return false;
   if (!results_.enabled || resFailed_) return true;
+  if (results_.formatted) return writeFormattedResults(frame);
   if (!res_.isOpen()) {
     output::ResultsFileHeader h;
     h.analysisName = prefix_;
@@ -298,11 +304,52 @@ bool Session::writeFrame(const analysis::OutputFrame& frame) {
   if (res_.writeStep(frame)) return true;
   resFailed_ = true;
   context().error(nullptr, res_.error(), "The steps before this one are in the file.");
-  closeResults();
+  res_.markFailed();
+  res_.close();  // the .out and .gra stay open: reopening would truncate them
+  return false;
+}
+
+bool Session::writeFormattedResults(const analysis::OutputFrame& frame) {
+  if (!formattedRes_.isOpen()) {
+    std::string err;
+    if (!formattedRes_.open(resultsFilePath(), *model_, results_, prefix_, &err)) {
+      resFailed_ = true;
+      context().error(nullptr, err, "Check that the output directory is writable.");
+      return false;
+    }
+  }
+  if (formattedRes_.writeStep(frame)) return true;
+  resFailed_ = true;
+  context().error(nullptr, formattedRes_.error(), "The steps before this one are in the file.");
+  formattedRes_.close();
+  return false;
+}
+
+bool Session::wantsTabular() const {
+  return model_ && !options_.checkOnly && !model_->requests.empty() && !results_.noPrint &&
+         !outFailed_;
+}
+
+bool Session::writeTabular(const analysis::OutputFrame& frame) {
+  if (!out_.isOpen()) {
+    std::string err;
+    if (!out_.open(tabularFilePath(), *model_, &err)) {
+      outFailed_ = true;
+      context().error(nullptr, err, "Check that the output directory is writable.");
+      return false;
+    }
+    if (analysisFailed_) out_.markFailed();  // an earlier analysis failed before any step
+  }
+  if (out_.writeStep(frame, *model_, results_)) return true;
+  outFailed_ = true;
+  context().error(nullptr, out_.error(), "The steps before this one's page are in the file.");
+  out_.close();
   return false;
 }
 
 void Session::closeResults() {
+  out_.close();
+  formattedRes_.close();
   gra_.close();
   if (!res_.isOpen()) return;
   if (resFailed_) res_.markFailed();

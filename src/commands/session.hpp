@@ -25,6 +25,8 @@
 #include "output/message_log.hpp"
 #include "output/request_file.hpp"
 #include "output/results_file.hpp"
+#include "output/results_formatted_file.hpp"
+#include "output/tabular_file.hpp"
 
 namespace openmss::commands {
 
@@ -63,6 +65,7 @@ class Session final : private analysis::RunReport {
   std::string requestFilePath() const;
   std::string messageFilePath() const;
   std::string resultsFilePath() const;
+  std::string tabularFilePath() const;
   int degreesOfFreedom() const { return state_ ? state_->degreesOfFreedom : 0; }
   int grueblerDegreesOfFreedom() const { return state_ ? state_->grueblerCount : 0; }
 
@@ -123,6 +126,10 @@ class Session final : private analysis::RunReport {
   // closed (valid XML, with the run's status) by STOP, a new model or the destructor.
   bool wantsFrames() const override;
   bool writeFrame(const analysis::OutputFrame& frame) override;
+  // The .out of a model with REQUESTs (output/tabular_file.hpp), unless OUTPUT/NOPRINT: opened
+  // at the first step, closed with the .res.
+  bool wantsTabular() const override;
+  bool writeTabular(const analysis::OutputFrame& frame) override;
   void closeResults();
   void progressStart() override;
   void progress(double t, double t0, double end, long steps) override;
@@ -142,6 +149,11 @@ class Session final : private analysis::RunReport {
   // The .gra of OUTPUT/GRSAVE (output/graphics_file.hpp), written from the same frames.
   output::GraphicsFileWriter gra_;
   bool graFailed_ = false;
+  // The .res of RESULTS/FORMATTED (output/results_formatted_file.hpp), instead of res_.
+  output::FormattedResultsWriter formattedRes_;
+  bool writeFormattedResults(const analysis::OutputFrame& frame);
+  output::TabularFileWriter out_;
+  bool outFailed_ = false;
   bool writeGraphicsFrame(const analysis::OutputFrame& frame);
   std::string prefix_;
   language::Dataset dataset_;  // as read; never edited (model_edits.hpp)

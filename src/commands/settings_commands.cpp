@@ -60,6 +60,8 @@ bool Session::setOutput(const language::Statement& c) {
       model_->output.noseparator = false;
     else if (a.name == "REQSAVE")
       model_->output.reqsave = true;
+    else if (a.name == "NOPRINT")  // no further .out steps (docs/output-files.md)
+      results_.noPrint = true;
     else {
       Diagnostic d;
       d.severity = Severity::Warning;

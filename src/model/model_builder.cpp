@@ -81,7 +81,7 @@ struct StatementGroups {
   std::vector<const Statement*> contacts;       // CONTACT
 };
 
-// OUTPUT statement: REQSAVE and (NO)SEPARATOR are supported; the others warn.
+// OUTPUT statement: REQSAVE, GRSAVE, NOPRINT and (NO)SEPARATOR are supported; the others warn.
 void applyOutputArguments(const Statement& s, OutputSettings& output, Diagnostics& diags) {
   for (const Argument& arg : s.args) {
     if (arg.name == "REQSAVE")
@@ -92,6 +92,8 @@ void applyOutputArguments(const Statement& s, OutputSettings& output, Diagnostic
       output.noseparator = false;
     else if (arg.name == "GRSAVE")  // <prefix>.gra (docs/output-files.md)
       output.grsave = true;
+    else if (arg.name == "NOPRINT")  // no <prefix>.out: read by model/results_arguments.cpp
+      continue;
     else
       diags.warning(arg.where, s.subject(),
                     arg.name + " is not supported yet and has no effect on this run",

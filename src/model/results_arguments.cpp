@@ -22,7 +22,7 @@ void applyResultsArguments(const language::Statement& s, ResultsSettings& result
       {"NOSYSTEMELEMENTS", &ResultsSettings::noSystemElements},
       {"NOREQUESTS", &ResultsSettings::noRequests}};
   for (const language::Argument& arg : s.args) {
-    if (arg.name == "XRF") continue;  // the only layout written, and ADAMS's default
+    if (arg.name == "XRF") continue;  // ADAMS's default layout
     if (const auto it = omissions.find(arg.name); it != omissions.end()) {
       results.*(it->second) = true;
     } else if (arg.name == "COMMENT") {
@@ -42,10 +42,14 @@ void applyResultsArguments(const language::Statement& s, ResultsSettings& result
       // the file is what they ask for, so they are accepted without a warning.
       continue;
     } else if (arg.name == "FORMATTED") {
-      diags.warning(arg.where, s.subject(),
-                    "FORMATTED (the ADAMS 10 text layout) is not written; the XML (XRF) .res "
-                    "is written instead",
-                    "Remove FORMATTED, or convert the XRF file with a post-processor.");
+      // The ADAMS 10 text layout (output/results_formatted_file.hpp); with XRF as well the
+      // XML file is written, as one .res cannot be both.
+      if (s.find("XRF"))
+        diags.warning(arg.where, s.subject(),
+                      "XRF and FORMATTED both given: the .res is written in the XML (XRF) layout",
+                      "Keep only the layout you want.");
+      else
+        results.formatted = true;
     } else {
       diags.warning(arg.where, s.subject(),
                     arg.name + " is not supported yet and has no effect on the .res",
@@ -90,6 +94,8 @@ ResultsSettings readResultsSettings(const language::Dataset& dataset, Diagnostic
       applyResultsArguments(s, results, diags);
     else if (s.name == "REQUEST")
       readRequestNames(s, results, diags);
+    else if (s.name == "OUTPUT" && s.find("NOPRINT"))
+      results.noPrint = true;  // no tabular output file (docs/output-files.md)
   }
   return results;
 }

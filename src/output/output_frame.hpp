@@ -45,6 +45,14 @@ struct OutputFrame {
   // Applied forces: Model::sforces, springDampers, linearFields (BUSHING, FIELD, BEAM) and
   // vectorForces (VFORCE, VTORQUE, GFORCE).
   std::vector<ElementForceOutput> sforces, springDampers, linearFields, vectorForces;
+  // Coupling reactions on the I marker of the first coupled joint (Model::couplers, gears) and
+  // GCON reactions on its I marker (Model::gcons).
+  std::vector<ElementForceOutput> couplers, gears, gcons;
+  // FRICTION on its joint's I marker, CONTACT on its I solid's part (about the I marker's
+  // origin), NFORCE on its J marker (the resultant its I markers' forces react on J).
+  std::vector<ElementForceOutput> frictions, contacts, nforces;
+  // States of each LSE/TFSISO (Model::linearStates), each GSE's continuous states and outputs.
+  std::vector<std::vector<double>> linearStates, gseStates, gseOutputs;
   // The eight columns F1..F8 of every REQUEST (Model::requests order): columns 1 and 5 are the
   // translational and rotational magnitudes; angles in radians (docs/output-files.md).
   std::vector<std::array<double, 8>> requests;

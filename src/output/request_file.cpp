@@ -29,10 +29,7 @@ std::string fitted(const std::string& text, std::size_t width) {
 // >= 1e100) loses one mantissa digit, "-5.3552E-101", instead of running into the previous
 // field as "-5.35523E-101" would.
 void writeValue(std::FILE* file, double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.5E", value);
-  if (std::strlen(text) > 12) std::snprintf(text, sizeof text, "%.4E", value);
-  std::fprintf(file, "%13s", text);
+  std::fputs(requestFileField(value).c_str(), file);
 }
 
 struct LengthUnit {
@@ -66,6 +63,15 @@ const auto* findKeyword(const Table& table, std::string_view keyword) {
 }
 
 }  // namespace
+
+std::string requestFileField(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.5E", value);
+  if (std::strlen(text) > 12) std::snprintf(text, sizeof text, "%.4E", value);
+  char field[32];
+  std::snprintf(field, sizeof field, "%13s", text);
+  return field;
+}
 
 std::optional<RequestFileUnits> requestFileUnits(std::string_view length, std::string_view mass,
                                                  std::string_view time, std::string_view force) {

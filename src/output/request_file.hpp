@@ -47,6 +47,10 @@ struct RequestFileUnits {
 std::optional<RequestFileUnits> requestFileUnits(std::string_view length, std::string_view mass,
                                                  std::string_view time, std::string_view force);
 
+// One value as a step record prints it: "%.5E" right-aligned in 13 columns, or "%.4E" when the
+// exponent needs three digits, so that the field always starts with a blank (docs).
+std::string requestFileField(double value);
+
 class RequestFileWriter {
  public:
   RequestFileWriter() = default;

@@ -149,6 +149,18 @@ void addElements(Builder& b, const model::Model& m, const model::ResultsSettings
     addForces(
         b, m.motions, &OutputFrame::motions,
         [](const model::Motion& j) { return named("MOTION", j.id, "Motion"); }, u);
+    // Entity types of the elements below were not observed in a file ADAMS wrote
+    // (docs/output-files.md).
+    addForces(
+        b, m.couplers, &OutputFrame::couplers,
+        [](const model::Coupler& e) { return named("COUPLER", e.id, "Coupler"); }, u);
+    addForces(
+        b, m.gears, &OutputFrame::gears,
+        [](const model::Gear& e) { return named("GEAR", e.id, "Gear"); }, u);
+    addForces(
+        b, m.gcons, &OutputFrame::gcons,
+        [](const model::GeneralConstraint& e) { return named("GCON", e.id, "User_Constraint"); },
+        u);
   }
   if (!rs.noAppliedForces) {
     addForces(
@@ -176,7 +188,63 @@ void addElements(Builder& b, const model::Model& m, const model::ResultsSettings
                                         : named("GFORCE", e.id, "General_Force");
         },
         u);
+    addForces(
+        b, m.frictions, &OutputFrame::frictions,
+        [](const model::Friction& e) { return named("FRICTION", e.id, "Friction"); }, u);
+    addForces(
+        b, m.nforces, &OutputFrame::nforces,
+        [](const model::MultiPointForce& e) { return named("NFORCE", e.id, "Multi_Point_Force"); },
+        u);
+    addForces(
+        b, m.contacts, &OutputFrame::contacts,
+        [](const model::Contact& e) { return named("CONTACT", e.id, "Contact"); }, u);
   }
+}
+
+using StateList = std::vector<std::vector<double>> OutputFrame::*;
+
+// Components prefix1..prefixN of element k's entry in a state list, on one line.
+void addStates(Builder& b, int entity, StateList list, std::size_t k, int count,
+               const std::string& prefix) {
+  b.newGroup();
+  for (int i = 0; i < count; ++i)
+    b.add(entity, prefix + std::to_string(i + 1), "",
+          [list, k, i](const OutputFrame& f) { return (f.*list)[k][static_cast<std::size_t>(i)]; });
+}
+
+// LSE/TFSISO states X1..Xn, GSE states X1..Xn and outputs Y1..Ym, PINPUT IN1..INn and POUTPUT
+// OUT1..OUTn (the values of their VARIABLEs).
+void addSystemElements(Builder& b, const model::Model& m) {
+  for (std::size_t k = 0; k < m.linearStates.size(); ++k) {
+    const model::LinearStateElement& ls = m.linearStates[k];
+    const bool lse = ls.kind == model::LinearStateElement::Kind::Lse;
+    const auto [name, type] = lse ? named("LSE", ls.id, "Linear_State_Equation")
+                                  : named("TFSISO", ls.id, "Transfer_Function");
+    const int e = b.entity(name, name, type, ls.id);
+    addStates(b, e, &OutputFrame::linearStates, k, static_cast<int>(ls.a.rows()), "X");
+  }
+  for (std::size_t k = 0; k < m.generalStates.size(); ++k) {
+    const model::GeneralStateElement& g = m.generalStates[k];
+    const std::string name = "GSE_" + std::to_string(g.id);
+    const int e = b.entity(name, name, "General_State_Equation", g.id);
+    addStates(b, e, &OutputFrame::gseStates, k, g.ns, "X");
+    addStates(b, e, &OutputFrame::gseOutputs, k, g.no, "Y");
+  }
+  const auto plant = [&](const std::vector<model::PlantVariables>& list, const char* prefix,
+                         const char* type, const char* component) {
+    for (const model::PlantVariables& p : list) {
+      const std::string name = std::string(prefix) + "_" + std::to_string(p.id);
+      const int e = b.entity(name, name, type, p.id);
+      b.newGroup();
+      for (std::size_t i = 0; i < p.variables.size(); ++i) {
+        const auto v = static_cast<std::size_t>(p.variables[i]);
+        b.add(e, component + std::to_string(i + 1), "",
+              [v](const OutputFrame& f) { return f.variables[v]; });
+      }
+    }
+  };
+  plant(m.pinputs, "PINPUT", "Plant_Input", "IN");
+  plant(m.poutputs, "POUTPUT", "Plant_Output", "OUT");
 }
 
 void addStatesAndRequests(Builder& b, const model::Model& m, const model::ResultsSettings& rs,
@@ -194,6 +262,7 @@ void addStatesAndRequests(Builder& b, const model::Model& m, const model::Result
       b.newGroup();
       b.add(e, "Q", "", [k](const OutputFrame& f) { return f.diffs[k]; });
     }
+    addSystemElements(b, m);
   }
   if (rs.noRequests) return;
   for (std::size_t r = 0; r < m.requests.size(); ++r) {
@@ -226,7 +295,15 @@ std::string ResultsLayout::mismatch(const OutputFrame& f) const {
       {"VFORCE/VTORQUE/GFORCEs", {vectorForces, f.vectorForces.size()}},
       {"requests", {requests, f.requests.size()}},
       {"VARIABLEs", {variables, f.variables.size()}},
-      {"DIFFs", {diffs, f.diffs.size()}}};
+      {"DIFFs", {diffs, f.diffs.size()}},
+      {"COUPLERs", {couplers, f.couplers.size()}},
+      {"GEARs", {gears, f.gears.size()}},
+      {"GCONs", {gcons, f.gcons.size()}},
+      {"FRICTIONs", {frictions, f.frictions.size()}},
+      {"NFORCEs", {nforces, f.nforces.size()}},
+      {"CONTACTs", {contacts, f.contacts.size()}},
+      {"LSE/TFSISOs", {linearStates, f.linearStates.size()}},
+      {"GSEs", {gses, f.gseStates.size()}}};
   for (const auto& [what, n] : counts)
     if (n.first != n.second)
       return "the step has " + std::to_string(n.second) + " " + what + ", the file's map " +
@@ -268,6 +345,14 @@ ResultsLayout resultsLayout(const model::Model& m, const model::ResultsSettings&
   l.requests = m.requests.size();
   l.variables = m.variables.size();
   l.diffs = m.diffs.size();
+  l.couplers = m.couplers.size();
+  l.gears = m.gears.size();
+  l.gcons = m.gcons.size();
+  l.frictions = m.frictions.size();
+  l.nforces = m.nforces.size();
+  l.contacts = m.contacts.size();
+  l.linearStates = m.linearStates.size();
+  l.gses = m.generalStates.size();
   return l;
 }
 

@@ -42,7 +42,9 @@ struct ResultsLayout {
   std::vector<ResultsComponent> components;
   // Element counts the snapshot must have for the layout to apply (checked at every step).
   std::size_t parts = 0, joints = 0, jprims = 0, motions = 0, sforces = 0, springDampers = 0,
-              linearFields = 0, vectorForces = 0, requests = 0, variables = 0, diffs = 0;
+              linearFields = 0, vectorForces = 0, requests = 0, variables = 0, diffs = 0,
+              couplers = 0, gears = 0, gcons = 0, frictions = 0, nforces = 0, contacts = 0,
+              linearStates = 0, gses = 0;
   // Empty when `frame` has the counts above, else what differs.
   std::string mismatch(const OutputFrame& frame) const;
 };

@@ -310,13 +310,13 @@ TEST_F(PistonExample, WritesEveryRequestOfTheDataSet) {
   }
 }
 
-// The run's summary names every output file on disk: the data set has OUTPUT/REQSAVE and
-// RESULTS, so the .msg, .req and .res (docs/output-files.md).
+// The run's summary names every output file on disk: the data set has OUTPUT/REQSAVE,
+// RESULTS and requests, so the .msg, .req, .res and .out (docs/output-files.md).
 TEST_F(PistonExample, SummaryNamesTheMessageRequestAndResultsFiles) {
   const std::string console = tailOf(*outDir_ / "console.txt", 4000);
   const std::string dir = outDir_->string();
   EXPECT_NE(console.find("  outputs:  " + dir + "/piston.msg, " + dir + "/piston.req, " + dir +
-                         "/piston.res\n"),
+                         "/piston.res, " + dir + "/piston.out\n"),
             std::string::npos)
       << console;
   EXPECT_TRUE(fs::exists(*outDir_ / "piston.res"));

@@ -131,13 +131,14 @@ TEST(ResultsArguments, UnsupportedArgumentsAreNamedWithTheirLine) {
   EXPECT_TRUE(rs.noVelocities);
   EXPECT_EQ(rs.comment, "run one");  // COMMENT takes the rest of the line, as in ADAMS
   EXPECT_FALSE(rs.noAccelerations);
+  EXPECT_FALSE(rs.formatted);  // XRF given too: the XML layout, with a warning
   EXPECT_EQ(rs.requestNames.at(3), (std::vector<std::string>{"Time"}));
   EXPECT_EQ(rs.requestNames.at(4),
             (std::vector<std::string>{"a", "", "c", "d", "e", "f", "g", "h"}));
   std::string text;
   for (const auto& x : d.all()) text += format(x) + "\n";
   EXPECT_NE(text.find("m.adm:2:"), std::string::npos) << text;
-  EXPECT_NE(text.find("FORMATTED"), std::string::npos) << text;
+  EXPECT_NE(text.find("XRF and FORMATTED both given"), std::string::npos) << text;
   EXPECT_NE(text.find("m.adm:3:"), std::string::npos) << text;
   EXPECT_NE(text.find("CUNITS is not supported"), std::string::npos) << text;
   EXPECT_EQ(d.all().size(), 2u) << text;
