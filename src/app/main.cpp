@@ -20,6 +20,7 @@
 #include "app/python_tool.hpp"
 #include "app/view_command.hpp"
 #include "commands/session.hpp"
+#include "common/parallel_for.hpp"
 #include "expr/standalone.hpp"
 #include "language/command_reader.hpp"
 #include "language/reader.hpp"
@@ -57,6 +58,8 @@ constexpr const char* kMainHelp =
     "  openmss COMMAND --help                       help on one command\n"
     "  openmss --version                            print the version\n"
     "\n"
+    "Environment: OPENMSS_THREADS=N runs the equations of large models on N threads\n"
+    "  (default: one per core; outputs are bit-identical for any N, docs/performance.md).\n"
     "Exit status: 0 success, 1 input errors, 2 analysis failure, 64 usage error.\n";
 
 constexpr const char* kRunHelp =
@@ -261,6 +264,11 @@ int eval(int argc, char** argv) {
 }  // namespace
 
 int main(int argc, char** argv) {
+  // OPENMSS_THREADS (common/parallel_for.hpp) is checked before anything runs.
+  if (const std::string problem = threadCountProblem(); !problem.empty()) {
+    std::fprintf(stderr, "openmss: %s\n", problem.c_str());
+    return 64;
+  }
   if (argc < 2) {
     app::PromptOptions prompt;
     prompt.interactive = isatty(STDIN_FILENO) != 0;

@@ -67,6 +67,7 @@ LocalNewtonMatrix::LocalNewtonMatrix(const MultibodySystem& system,
   if (usable_) planBodies(pattern);
   if (usable_) planEquations(pattern);
   if (usable_) planForceAndUser(pattern);
+  if (usable_) parallelColours_ = coloursMayRunInParallel();
 }
 
 int LocalNewtonMatrix::find(const JacobianPattern& p, int row, int column) {
@@ -425,34 +426,9 @@ void LocalNewtonMatrix::assemble(double t, const Eigen::VectorXd& y, const Eigen
       for (int base = 0; base < directions; ++base)
         equationChunk<Dual<double>>(eq, plan, base, lambda, values);
   }
-  // Force elements and user equations: compressed forward AD of their rows alone.
-  if (forceAndUser_.nonZeros() == 0) return;
-  using D = Dual<double>;
-  work.y.resize(static_cast<size_t>(n));
-  work.yp.resize(static_cast<size_t>(n));
-  work.g.resize(static_cast<size_t>(n));
-  for (int i = 0; i < n; ++i) {
-    work.y[i] = D(y(i), 0.0);
-    work.yp[i] = D(yp(i), 0.0);
-  }
-  const JacobianPattern& p = forceAndUser_;
-  for (int colour = 0; colour < p.colours(); ++colour) {
-    const int first = p.colourStart[colour], end = p.colourStart[colour + 1];
-    for (int k = first; k < end; ++k) {
-      const int c = p.colourColumns[k];
-      work.y[c].d = 1.0;
-      work.yp[c].d = l.differential(c) ? cj : 0.0;
-    }
-    for (int r : forceAndUserRows_) work.g[r] = D(0.0, 0.0);
-    system_.forceAndUserResidual(t, work.y.data(), work.yp.data(), work.g.data());
-    for (int k = first; k < end; ++k) {
-      const int c = p.colourColumns[k];
-      for (int e = p.columnStart[c]; e < p.columnStart[c + 1]; ++e)
-        values[forceAndUserIndex_[e]] += work.g[p.rowIndex[e]].d;
-      work.y[c].d = 0.0;
-      work.yp[c].d = 0.0;
-    }
-  }
+  // Force elements and user equations: compressed forward AD of their rows alone
+  // (local_newton_colours.cpp: the colours on several threads when the elements allow it).
+  forceAndUserColours(t, y, yp, cj, values, work);
 }
 
 }  // namespace openmss::mechanics

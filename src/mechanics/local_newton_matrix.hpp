@@ -69,6 +69,11 @@ class LocalNewtonMatrix {
   void stabilisationChunk(const EquationPlan& plan, int slot, const S* out, int base, int last,
                           double* values) const;
   void bodyBlocks(const Eigen::VectorXd& y, double cj, double* values) const;
+  // The force-element and user-equation entries, one compressed AD pass per colour of
+  // forceAndUser_ (local_newton_colours.cpp); in parallel over colours when parallelColours_.
+  bool coloursMayRunInParallel() const;
+  void forceAndUserColours(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                           double cj, double* values, SparseJacobianWork& work);
   void kinematics(const Eigen::VectorXd& y);
   template <class S>
   void buildSeeded(const ConstraintEquation& eq, const EquationPlan& plan, int base,
@@ -96,6 +101,15 @@ class LocalNewtonMatrix {
   JacobianPattern forceAndUser_;
   std::vector<int> forceAndUserIndex_;  // per nonzero of forceAndUser_: its index in values
   std::vector<int> forceAndUserRows_;   // rows that pattern writes
+  // True when every force element is one whose evaluation reads nothing but its own constant
+  // data and the state (SPRINGDAMPER, BUSHING/FIELD/BEAM), there are no user equations, and
+  // the elements are many enough to pay for handing out work; then the colours run on the
+  // thread pool (common/parallel_for.hpp), block b > 0 on the duals of blockDuals_[b - 1].
+  bool parallelColours_ = false;
+  struct BlockDuals {
+    std::vector<Dual<double>> y, yp, g;
+  };
+  std::vector<BlockDuals> blockDuals_;
   // The seeded poses and marker frames of the last multi-direction pass: the equations of one
   // joint read the same markers, so they are built once per joint, not once per equation.
   struct SeededFrames {

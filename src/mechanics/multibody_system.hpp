@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -215,6 +216,12 @@ class MultibodySystem {
   template <class T>
   T sforceValue(int index, double t, const T* y) const;
   static double wrapDelta(double geometryValue, double target);
+  // The constraint part of residual<double> in two phases (multibody_residual_parallel.cpp):
+  // per equation, on the thread pool, its geometry and its force terms into the calling
+  // thread's slots; then, on this thread in equation order, the same additions into g as the
+  // serial loop makes. False (nothing done) when it does not apply: one thread, few equations,
+  // or an equation kind whose evaluation reads shared state (the serial loop then runs).
+  bool parallelConstraintRows(double t, const double* y, double* g) const;
   // The reaction of equations selected by `take(eq)` on `marker`'s part.
   template <class Pick>
   void reactionOf(Pick take, int marker, const double* y, Eigen::Vector3d& force,
@@ -418,6 +425,11 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
   const DynamicReads<T> reads = forces_.readsWith(&base);  // and force read-backs (§4d)
   forces_.addToResidual(t, y, g, &reads);
   user_.addToResidual(t, y, yp, g, &reads);
+  if constexpr (std::is_same_v<T, double>) {
+    // Large models: the constraint rows and forces on the thread pool, same bits
+    // (multibody_residual_parallel.cpp).
+    if (parallelConstraintRows(t, y, g)) return;
+  }
   const auto& eqs = constraints_.equations();
   KinematicsScratch<T>& kin = beginKinematics<T>();
   for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
