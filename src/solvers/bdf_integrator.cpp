@@ -134,9 +134,9 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   heldOwn_.clear();
   h_ = settings_.hinit > 0 ? settings_.hinit : 1e-3;
   h_ = std::min(h_, settings_.hmax);
-  for (auto* v :
-       {&yNew_, &ypNew_, &yPred_, &base_, &g_, &dy_, &predictorDiff_, &errorWeight_,
-        &correctorWeight_, &errorMask_, &differentialMask_, &velocityMask_, &roundOffFloor_})
+  for (auto* v : {&yNew_, &ypNew_, &yPred_, &base_, &g_, &dy_, &predictorDiff_, &errorWeight_,
+                  &correctorWeight_, &errorMask_, &differentialMask_, &velocityMask_,
+                  &roundOffFloor_})
     v->resize(n);
   rowExponent_.resize(n);
   unknownExponent_.resize(n);
@@ -174,8 +174,7 @@ bool BdfIntegrator::withinRoundOff(double cj) {
   constexpr double kEps = 2.220446049250313e-16;
   roundOffFloor_ = (kRoundOffUlps * kEps) * (1.0 + yNew_.array().abs()) *
                    (1.0 + (std::max(1.0, cj) - 1.0) * velocityMask_.array());
-  return ((dy_.array().abs() - roundOffFloor_.array()) * differentialMask_.array()).maxCoeff() <=
-         0.0;
+  return ((dy_.array().abs() - roundOffFloor_.array()) * differentialMask_.array()).maxCoeff() <= 0.0;
 }
 
 void BdfIntegrator::setWeights(double h) {
@@ -354,8 +353,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       // (noted when an attempt fails, below); not computed per iteration otherwise.
       if (observingIterations()) {
         noteWorst(g_, dy_);
-        notifyIteration(
-            {tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_, lastWorstChange_});
+        notifyIteration({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
+                         lastWorstChange_});
       }
       if (it > 0) rate = size / std::max(previous, 1e-300);
       if (it == 0) firstSize = size;
@@ -371,7 +370,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         break;
       }
       if (it > 0 && rate < 0.9) {
-        const double target = std::max(kTightChange, kCorrectorShare * errorRatio * fromPredictor);
+        const double target =
+            std::max(kTightChange, kCorrectorShare * errorRatio * fromPredictor);
         if (rate / (1.0 - rate) * size <= target) {
           converged = true;
           break;
@@ -439,23 +439,21 @@ void BdfIntegrator::updateDivided() {
 // so a split needs a state struct (left for a change that can be checked on its own).
 bool BdfIntegrator::step(double tout) {
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
-  const double hmin =
-      settings_.hmin > 0 ? settings_.hmin : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
+  const double hmin = settings_.hmin > 0 ? settings_.hmin
+                                         : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
   // Attempts until one step is accepted (or the step size falls below HMIN).
   while (t_ < tout - eps) {
     double h = std::min(h_, settings_.hmax);
     // Land exactly on the output time; avoid leaving a sliver for the next step.
-    if (t_ + h >= tout - eps)
-      h = tout - t_;
-    else if (t_ + 2.0 * h > tout)
-      h = 0.5 * (tout - t_);
+    if (t_ + h >= tout - eps) h = tout - t_;
+    else if (t_ + 2.0 * h > tout) h = 0.5 * (tout - t_);
     bool newtonFailed = false;
     double err = 0.0;
     using Event = BdfStepInfo::Event;
     notifyStep({Event::Attempt, stats_.steps + 1, k_, t_, h, 0.0});
     if (!attemptStep(h, k_, &newtonFailed, &err)) {
-      notifyStep({newtonFailed ? Event::CorrectorFailed : Event::ErrorTestFailed, stats_.steps + 1,
-                  k_, t_, h, err});
+      notifyStep({newtonFailed ? Event::CorrectorFailed : Event::ErrorTestFailed,
+                  stats_.steps + 1, k_, t_, h, err});
       if (newtonFailed) {
         ++stats_.newtonFailures;
         h_ = 0.25 * h;
@@ -530,13 +528,8 @@ bool BdfIntegrator::step(double tout) {
       if (ratio >= capped && (rLow >= capped || rLow == 0.0) && (rHigh >= capped || rHigh == 0.0)) {
         // The step is held at HMAX whatever the order: take the order with the smallest error.
         double eNow = std::max(err, 1e-300);
-        if (eHigh > 0 && eHigh < eNow) {
-          nextK = k_ + 1;
-          ratio = rHigh;
-        } else if (eLow > 0 && eLow < 0.5 * eNow) {
-          nextK = k_ - 1;
-          ratio = rLow;
-        }
+        if (eHigh > 0 && eHigh < eNow) { nextK = k_ + 1; ratio = rHigh; }
+        else if (eLow > 0 && eLow < 0.5 * eNow) { nextK = k_ - 1; ratio = rLow; }
       } else if (rLow > ratio && rLow >= rHigh) {
         nextK = k_ - 1;
         ratio = rLow;
@@ -601,16 +594,10 @@ bool BdfIntegrator::step(double tout) {
       nextK = k_;
       ratio = ownRatio;
     }
-    if (nextK != k_) {
-      k_ = nextK;
-      stepsAtOrder_ = 0;
-    }
-    if (ratio >= 1.5)
-      h_ = h * std::min(ratio, stabilityJump ? ratio : 2.0);
-    else if (ratio < 1.0)
-      h_ = h * std::max(ratio, 0.5);
-    else
-      h_ = std::max(h, h_);
+    if (nextK != k_) { k_ = nextK; stepsAtOrder_ = 0; }
+    if (ratio >= 1.5) h_ = h * std::min(ratio, stabilityJump ? ratio : 2.0);
+    else if (ratio < 1.0) h_ = h * std::max(ratio, 0.5);
+    else h_ = std::max(h, h_);
     h_ = std::min(h_, settings_.hmax);
     stats_.order = k_;
     stats_.stepSize = h;
