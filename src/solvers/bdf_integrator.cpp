@@ -28,13 +28,6 @@ constexpr double kStalledChange = 1e-1;
 // through cj). At ERROR = 1e-10 and steps of 1e-8 s (the KUKA arm data sets of the corpus)
 // that floor lies above kStalledChange of the tolerance.
 constexpr double kRoundOffUlps = 1000.0;
-// I3 velocities in the error test, weighted as the displacement their local error makes over
-// this many steps (setWeights). Measured on A02 (docs/validation.md), GSTIFF at ERROR = 1e-6,
-// largest B0 error / steps: N = 4 over 10 s, without 9.6e-3 m / 658, 0.5: 1.3e-3 / 710,
-// 1: 7.9e-4 / 812, 2: 8.5e-4 / 1053, 4: 3.8e-4 / 1536; N = 40 over 20 s, B0 error at 20 s,
-// 1: 4.2e-3 m, 2: 1.2e-4 m (1.6e-2 m without). On the 100-link planar chain at 1e-6 the tip
-// error stays 5-6e-8 m for 1427 steps instead of 1488.
-constexpr double kVelocityErrorSteps = 2.0;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
 // Singular configurations (docs/integrators.md, "Singular configurations"): where the
@@ -58,7 +51,8 @@ constexpr double kResidualNoise = 1e-6;
 // ... or whose unscaled residual has (kRawResidualNoise): the scaled one is dominated by the
 // constraint rows times cj^2, which at the steps of ~1e-5 s taken through a flat passage keep
 // the positions' round-off along the extra degrees of freedom above kResidualNoise while every
-// equation is solved to round-off (A02, N = 40, ERROR = 1e-8: failed at t = 4.65 s without it).
+// equation is solved to round-off (A02, N = 40, GSTIFF at ERROR = 1e-8 with the I3 velocities in
+// the error test, docs/integrators.md: failed at t = 4.65 s without it).
 constexpr double kRawResidualNoise = 1e-6;
 // Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
 // share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
@@ -177,7 +171,7 @@ bool BdfIntegrator::withinRoundOff(double cj) {
   return ((dy_.array().abs() - roundOffFloor_.array()) * differentialMask_.array()).maxCoeff() <= 0.0;
 }
 
-void BdfIntegrator::setWeights(double h) {
+void BdfIntegrator::setWeights() {
   // Weights from the last accepted solution, once per attempt: |v_i| / (ERROR (1 + |y_i|)),
   // relative for large values, absolute for small ones.
   errorWeight_ = (settings_.error * (1.0 + y_.array().abs())).inverse().matrix();
@@ -186,13 +180,7 @@ void BdfIntegrator::setWeights(double h) {
   // displacements integrate over the rest of the run (weighting velocities by 1/cj, their
   // effect within one step, flipped the 5 s spherical validation pendulum with WSTIFF).
   correctorWeight_ = errorWeight_.cwiseProduct(differentialMask_);
-  // I3 (issue 20, docs/integrators.md "GSTIFF I3's global error"): the velocities, which the
-  // problem leaves out of the error test, enter it in displacement units, as the displacement
-  // their local error makes over the step (kVelocityErrorSteps h |dv|). Displacements alone let
-  // the velocities' local error through as an energy, hence phase, error of undamped motion.
-  const double velocityShare = kVelocityErrorSteps * h;
-  for (Eigen::Index i = 0; i < errorWeight_.size(); ++i)
-    errorWeight_(i) *= errorMask_(i) != 0.0 ? 1.0 : velocityShare * velocityMask_(i);
+  errorWeight_.array() *= errorMask_.array();
 }
 
 void BdfIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy) {
@@ -274,7 +262,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     errorRatio = 1.0;  // Taylor predictor vs backward Euler: equal and opposite h^2/2 y''
   }
 
-  setWeights(h);
+  setWeights();
 
   // Modified Newton. A Jacobian is kept while cj stays within kCjDrift of the one it was
   // formed with and the iteration converges.

@@ -61,7 +61,7 @@ class BdfIntegrator final : public Integrator {
   // correctorWeight_). NaN when v holds a NaN or an infinity anywhere (0 * inf is NaN): a
   // non-finite unknown fails the attempt.
   static double weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w);
-  void setWeights(double h);
+  void setWeights();
   // True when every differential change of the last iteration (dy_) is at the round-off of its
   // unknown at yNew_ (kRoundOffUlps in the .cpp): a stalled iteration there has converged.
   bool withinRoundOff(double cj);

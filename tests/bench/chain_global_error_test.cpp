@@ -6,11 +6,11 @@
 // reference agrees with Simbody at accuracy 1e-10 to 3.4e-11 m on the 100-link chain over
 // 10 s (docs/performance.md, "References"), far below the bound asserted here.
 //
-// Bound: ERROR itself (1e-6 m). The chain swings 0.1 rad without damping, so a step's local
+// Bound: twice ERROR (2e-6 m). The chain swings 0.1 rad without damping, so a step's local
 // error is not damped away and the global error after 2 s is a small multiple of the local
-// ones; measured 3.3e-7 m with the I3 velocities in the error test (8.5e-7 m without). The
-// issue's target for the 100-link chain over 10 s is 2e-5 m (measured 5.9e-8 m, docs/
-// performance.md).
+// ones; measured 8.5e-7 m (3.3e-7 m with the I3 velocities in the error test, an experiment
+// not kept: docs/integrators.md, "GSTIFF I3's global error"). The target for the
+// 100-link chain over 10 s is 2e-5 m (measured 5.2e-8 m, docs/performance.md).
 
 #include <gtest/gtest.h>
 
@@ -104,7 +104,7 @@ TEST(ChainGlobalError, GstiffI3AtOneMillionthAgainstMerson) {
                                      gstiff.position[2] - reference.position[2]);
   std::printf("chain-planar %d links, %g s: GSTIFF ERROR=1e-6 tip %.2e m from MERSON 1e-9\n",
               kLinks, kEnd, distance);
-  EXPECT_LT(distance, 1e-6);
+  EXPECT_LT(distance, 2e-6);
 }
 
 }  // namespace
