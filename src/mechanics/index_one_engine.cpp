@@ -32,7 +32,12 @@ namespace {
 // unequal inertias (the DAE test-set pendulum, a unit point mass with inertia 1e-10) S_cc is
 // dominated by the rotational part and a legitimate pivot of a translational row is 1e-10 of
 // it (measured: the MERSON pendulum tests failed with S_cc alone), while at a singular
-// configuration the pivot is small against both parts. Any pivot at most kRoundOffPivot of
+// configuration the pivot is small against both parts. Only the translational part is taken
+// so: a rotational part far below the translational one comes from the geometry, not from the
+// inertias (a position row whose lever arm points along the row, as in the rods of the IFToMM
+// A02 row within 1e-4 rad of its flat configuration: q ~ 3e-8 against t = 2), and taking it
+// as the reference kept those nearly dependent rows in the solve there (MERSON at ERROR = 1e-8
+// failed at the first flat passage; docs/theory.md §9d). Any pivot at most kRoundOffPivot of
 // S_cc is dependent to working precision whatever the parts.
 constexpr double kPivotTolerance = 1e-8;
 constexpr double kRoundOffPivot = 1e-12;
@@ -350,9 +355,9 @@ bool IndexOneDynamics::Engine::factor(const double* entries, const Eigen::Vector
       if (!std::isfinite(d)) return false;
       const size_t row = static_cast<size_t>(blockStart[j] + c);
       const double t = translationalPart[row], q = rotationalPart[row];
-      const double lo = std::min(t, q), hi = std::max(t, q);
-      // (A part within round-off of zero, lo <= kRoundOffPivot hi, is no part.)
-      const double part = lo > kRoundOffPivot * hi && hi > kPartRatio * lo ? lo : sDiagonal[row];
+      // (A part within round-off of zero, t <= kRoundOffPivot q, is no part.) Only a
+      // translational part far below the rotational one is the reference: see kPartRatio.
+      const double part = t > kRoundOffPivot * q && q > kPartRatio * t ? t : sDiagonal[row];
       const bool dependent =
           !(d > kRoundOffPivot * sDiagonal[row]) || !(d > kPivotTolerance * part);
       // A dependent row: inverse 0 zeroes its column of L below the pivot (here and in

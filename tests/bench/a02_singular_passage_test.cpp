@@ -141,7 +141,8 @@ Outcome runA02(const std::string& integrator, double error) {
   return o;
 }
 
-void expectWithinBenchmark(const std::string& integrator, double error) {
+void expectWithinBenchmark(const std::string& integrator, double error,
+                           double tolerance = kBenchmarkTolerance) {
   const Outcome o = runA02(integrator, error);
   char label[64];
   std::snprintf(label, sizeof label, "%s ERROR=%g", integrator.c_str(), error);
@@ -149,7 +150,7 @@ void expectWithinBenchmark(const std::string& integrator, double error) {
   EXPECT_EQ(o.status, 0) << o.output;
   EXPECT_EQ(o.samples, kOutputSteps + 1) << o.output;  // every output time, t = 0 to END
   EXPECT_EQ(o.flatPassages, 10);
-  EXPECT_LT(o.largestError, kBenchmarkTolerance);
+  EXPECT_LT(o.largestError, tolerance);
   std::printf("A02 N=%d %s ERROR=%g: largest B0 error %.2e m over %d outputs, %d flat passages\n",
               kWindows, integrator.c_str(), error, o.largestError, o.samples, o.flatPassages);
 }
@@ -163,6 +164,13 @@ TEST(A02SingularPassage, Dstiff) { expectWithinBenchmark("DSTIFF", 1e-6); }
 TEST(A02SingularPassage, MersonAtTheLoosestAndTightestError) {
   expectWithinBenchmark("MERSON", 1e-4);
   expectWithinBenchmark("MERSON", 1e-8);  // stopped at the second flat passage before
+}
+// The index-1 solve drops the nearly dependent rows near the flat configuration (docs/theory.md
+// §9d, "Singular S"): at ERROR = 1e-8 MERSON then follows the exact solution to 4.2e-7 m
+// (2.2e-4 m when those rows were kept, their small pivots amplifying the projection's residual
+// into the accelerations). Bound: 1e-5 m, 1000 ERROR, two decades under the benchmark's.
+TEST(A02SingularPassage, MersonDropsNearlyDependentRows) {
+  expectWithinBenchmark("MERSON", 1e-8, 1e-5);
 }
 
 }  // namespace

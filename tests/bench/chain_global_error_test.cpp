@@ -1,0 +1,110 @@
+// GSTIFF I3's global error on a pendulum chain (issue 20, item 5; docs/integrators.md, "GSTIFF
+// I3's global error"): the tip of a 20-link planar chain (bench/model_generators.cpp, the
+// benchmark chain of docs/performance.md at a CI size: 20 links and 2 s instead of 100 links
+// and 10 s) after GSTIFF at ERROR = 1e-6, against the same model integrated by another
+// method, MERSON (explicit Kutta-Merson on the index-1 equations) at ERROR = 1e-9. That
+// reference agrees with Simbody at accuracy 1e-10 to 3.4e-11 m on the 100-link chain over
+// 10 s (docs/performance.md, "References"), far below the bound asserted here.
+//
+// Bound: twice ERROR (2e-6 m). The chain swings 0.1 rad without damping, so a step's local
+// error is not damped away and the global error after 2 s is a small multiple of the local
+// ones; measured 8.5e-7 m (3.3e-7 m with the I3 velocities in the error test, an experiment
+// not kept: docs/integrators.md, "GSTIFF I3's global error"). The issue's target for the
+// 100-link chain over 10 s is 2e-5 m (measured 5.2e-8 m, docs/performance.md).
+
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "model_generators.hpp"
+#include "support/cli_run.hpp"
+
+namespace {
+
+namespace fs = std::filesystem;
+using namespace openmss::bench;
+using openmss::testing::Result;
+using openmss::testing::run;
+using openmss::testing::scratch;
+using openmss::testing::write;
+
+constexpr int kLinks = 20;
+constexpr double kEnd = 2.0;
+constexpr int kOutputSteps = 10;
+
+// The numbers of each fixed-width line (" %13.5E" fields) of a .req file.
+std::vector<std::vector<double>> numericLines(const fs::path& req) {
+  std::ifstream in(req);
+  std::string line;
+  std::vector<std::vector<double>> out;
+  while (std::getline(in, line)) {
+    std::vector<double> numbers;
+    bool numeric = line.size() >= 14;
+    for (size_t k = 0; numeric && 1 + 13 * (k + 1) <= line.size(); ++k) {
+      const std::string field = line.substr(1 + 13 * k, 13);
+      char* end = nullptr;
+      numbers.push_back(std::strtod(field.c_str(), &end));
+      numeric = end != field.c_str() &&
+                field.find_first_not_of(' ', end - field.c_str()) == std::string::npos;
+    }
+    if (numeric) out.push_back(numbers);
+  }
+  return out;
+}
+
+struct Tip {
+  int status = -1;
+  std::string output;
+  double time = -1.0;
+  std::array<double, 3> position{};
+};
+
+// The tip at the last output time: the time line, then REQUEST/1..5; REQUEST/3 carries DX and
+// DY, REQUEST/4 DZ first, each as AINT(v), AINT(1e6 frac) and the rest (six printed digits are
+// too few for 1e-8 m; bench/model_generators.cpp).
+Tip runChain(const std::string& integrator, double error) {
+  const fs::path dir = scratch("chain");
+  write(dir / "chain.adm", planarPendulumChainAdm(kLinks));
+  write(dir / "chain.acf", chainAcf("chain.adm", "chain", kEnd, kOutputSteps, error, integrator));
+  const Result r = run("run chain.acf", dir);
+  Tip tip;
+  tip.status = r.status;
+  tip.output = r.output;
+  const auto lines = numericLines(dir / "chain.req");
+  if (lines.size() >= 6) {
+    const auto& time = lines[lines.size() - 6];
+    const auto& r3 = lines[lines.size() - 3];
+    const auto& r4 = lines[lines.size() - 2];
+    if (time.size() == 1 && r3.size() == 6 && r4.size() == 6) {
+      tip.time = time[0];
+      tip.position = {r3[0] + 1e-6 * (r3[1] + r3[2]), r3[3] + 1e-6 * (r3[4] + r3[5]),
+                      r4[0] + 1e-6 * (r4[1] + r4[2])};
+    }
+  }
+  fs::remove_all(dir);
+  return tip;
+}
+
+TEST(ChainGlobalError, GstiffI3AtOneMillionthAgainstMerson) {
+  const Tip reference = runChain("MERSON", 1e-9);
+  const Tip gstiff = runChain("GSTIFF", 1e-6);
+  for (const Tip* t : {&reference, &gstiff}) {
+    ASSERT_EQ(t->status, 0) << t->output;
+    ASSERT_DOUBLE_EQ(t->time, kEnd) << t->output;  // the last record is the end time
+  }
+  // The tip hangs about kLinks m below the pivot: the comparison is not of zeros.
+  EXPECT_GT(std::hypot(reference.position[0], reference.position[1]), 0.9 * kLinks);
+  const double distance = std::hypot(gstiff.position[0] - reference.position[0],
+                                     gstiff.position[1] - reference.position[1],
+                                     gstiff.position[2] - reference.position[2]);
+  std::printf("chain-planar %d links, %g s: GSTIFF ERROR=1e-6 tip %.2e m from MERSON 1e-9\n",
+              kLinks, kEnd, distance);
+  EXPECT_LT(distance, 2e-6);
+}
+
+}  // namespace
