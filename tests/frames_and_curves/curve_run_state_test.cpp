@@ -37,7 +37,7 @@ bool command(commands::Session& s, const std::string& text) {
   return s.execute(c.front());
 }
 
-// A bead sliding down an OPEN straight-line curve (ORDER=2 through 3 points from (-3, 1.5, -1)
+// A bead sliding down an OPEN straight-line curve (ORDER=2 through 4 points from (-3, 1.5, -1)
 // to (3, -1.5, 1), length 7) under gravity, from (0.6, -0.3, 0.2) at 0.35 along the line. Its
 // arc length s(t) = 0.35 t + (a/2) t^2 with a = g 1.5/3.5 reaches the end (2.8 on) at
 // t = 1.0739 s; ADAMS stops there.
@@ -46,7 +46,8 @@ const char* kBeadOffTheEnd =
     "MARKER/11, PART=1, FLOATING\n"
     "PART/2, MASS=2, CM=20, IP=0.1,0.2,0.3, QG=0.6,-0.3,0.2, VX=0.3, VY=-0.15, VZ=0.1\n"
     "MARKER/20, PART=2\nACCGRAV/ JGRAV=-9.81\n"
-    "MATRIX/1, FULL=RORDER, ROWS=3, COLUMNS=3, VALUES=-3,1.5,-1, 0,0,0, 3,-1.5,1\n"
+    "MATRIX/1, FULL=RORDER, ROWS=4, COLUMNS=3, VALUES=-3,1.5,-1, -1,0.5,-0.33333333333333333, "
+    "1,-0.5,0.33333333333333333, 3,-1.5,1\n"
     "CURVE/1, OPEN, MATRIX=1, CURVE_POINTS, ORDER=2\n"
     "PTCV/7, I=20, JFLOAT=11, CURVE=1, RM=10\nOUTPUT/REQSAVE\n"
     "REQUEST/1, DISPLACEMENT, I=20, J=10\nEND\n";
@@ -58,7 +59,9 @@ TEST(CurveRunState, PointRunningOffAnOpenCurveStopsTheRunNamingTheElementAndTime
   o.outputDirectory = dir.string();
   o.echoDiagnostics = false;
   commands::Session s(o);
-  ASSERT_TRUE(s.loadModel((dir / "b.adm").string(), "b"));
+  const bool loaded = s.loadModel((dir / "b.adm").string(), "b");
+  for (const auto& d : s.diagnostics().all()) std::printf("%s\n", format(d).c_str());
+  ASSERT_TRUE(loaded);
   ASSERT_TRUE(command(s, "INTEGRATOR/GSTIFF, ERROR=1e-7, HMAX=0.01"));
   EXPECT_FALSE(command(s, "SIMULATE/DYNAMICS, END=3, STEPS=30"));
   const double a = 9.81 * 1.5 / 3.5;
