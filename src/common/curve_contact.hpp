@@ -64,13 +64,13 @@ inline bool localContactParameters(const BSplineCurve& ci, int samplesI, const B
     const double db = std::max(-stepB, std::min(stepB, step[1]));
     a += da;
     b += db;
-    if (std::abs(a - start[0]) > 4.0 * stepA || std::abs(b - start[1]) > 4.0 * stepB)
-      return false;
+    if (std::abs(a - start[0]) > 4.0 * stepA || std::abs(b - start[1]) > 4.0 * stepB) return false;
     if (closing) {
       out = {a, b};
       return true;
     }
-    closing = std::abs(da) < 1e-9 * (1.0 + std::abs(a)) && std::abs(db) < 1e-9 * (1.0 + std::abs(b));
+    closing =
+        std::abs(da) < 1e-9 * (1.0 + std::abs(a)) && std::abs(db) < 1e-9 * (1.0 + std::abs(b));
   }
   return false;
 }
@@ -129,10 +129,9 @@ std::array<S, 2> curveCurveResiduals(const BSplineCurve& ci, int samplesI, const
   const M3<S> r{{ai.tmul(aj.c[0]), ai.tmul(aj.c[1]), ai.tmul(aj.c[2])}};
   const V3<double> o0(valueOf(o.x), valueOf(o.y), valueOf(o.z));
   M3<double> r0;
-  for (int k = 0; k < 3; ++k) r0.c[k] = V3<double>(valueOf(r.c[k].x), valueOf(r.c[k].y),
-                                                 valueOf(r.c[k].z));
-  const std::array<double, 2> ab =
-      curveContactParameters(ci, samplesI, cj, samplesJ, o0, r0, warm);
+  for (int k = 0; k < 3; ++k)
+    r0.c[k] = V3<double>(valueOf(r.c[k].x), valueOf(r.c[k].y), valueOf(r.c[k].z));
+  const std::array<double, 2> ab = curveContactParameters(ci, samplesI, cj, samplesJ, o0, r0, warm);
   if (parameters) *parameters = ab;
   S a(ab[0]), b(ab[1]);
   if constexpr (!std::is_same_v<S, double>) {

@@ -114,7 +114,9 @@ class MultibodySystem {
   // has no function for them; JOINT(...) and FORCE requests of the coupled joints leave it out).
   // Gcon: the reaction of a GCON's equation on the part of its I marker (zero when the FUNCTION
   // does not read I, as ADAMS documents).
-  enum class ConstraintElement { Joint, Motion, JPrim, Coupler, Gear, Gcon, PointCurve, CurveCurve };
+  enum class ConstraintElement {
+    Joint, Motion, JPrim, Coupler, Gear, Gcon, PointCurve, CurveCurve
+  };
   void elementReaction(ConstraintElement kind, int element, int marker, const double* y,
                        Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
   // The I and J markers of a constraint element.
