@@ -94,6 +94,14 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
     const auto& st = integrator.statistics();
     publishStatus(s.expressions->status(), st);
     showIntegratorWarnings();
+    if (!ok && !s.expressions->curveRunOff().empty()) {  // a PTCV/CVCV left an OPEN curve
+      run.error(nullptr, "the dynamic analysis stopped: " + s.expressions->curveRunOff(),
+                "Lengthen the curve (its MATRIX) or make it CLOSED, or end the simulation "
+                "before that time.");
+      s.t = integrator.t();
+      s.summary.time = s.t;
+      return false;
+    }
     if (!ok) {
       // Name the request file only when one was written (OUTPUT/REQSAVE and at least one
       // output step).

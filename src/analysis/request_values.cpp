@@ -295,6 +295,17 @@ std::array<double, 8> requestColumns(const mechanics::MultibodySystem& s,
           ft += f; tt += tq;
         }
       }
+      // CVCV: its reaction on IRM's part (JRM's) when I is its IRM (JRM) and J is the other
+      // curve's RM or float marker; torque about I (docs/theory.md §5e).
+      for (int e = 0; e < static_cast<int>(m.cvcvs.size()); ++e) {
+        const model::CurveCurve& cv = m.cvcvs[e];
+        if ((r.iMarker == cv.iRm && (r.jMarker == cv.jRm || r.jMarker == cv.jFloat)) ||
+            (r.iMarker == cv.jRm && (r.jMarker == cv.iRm || r.jMarker == cv.iFloat))) {
+          s.elementReaction(mechanics::MultibodySystem::ConstraintElement::CurveCurve, e,
+                            r.iMarker, y.data(), f, tq);
+          ft += f; tt += tq;
+        }
+      }
       // GCONs and applied force elements (SFORCE, SPRINGDAMPER, BUSHING, ...) between I and J.
       if (r.jMarker >= 0) {
         addGconReactions(s, r.iMarker, r.jMarker, y, ft, tt);

@@ -8,6 +8,7 @@ RunState::RunState(mechanics::MultibodySystem& system)
   yp = Eigen::VectorXd::Zero(y.size());
   // The COUPLER/GEAR turn counts' storage before the equations are bound to it.
   expressions->trackCoupledAngles(system.constraints());
+  expressions->trackCurveParameters(system.constraints());  // PTCV/CVCV warm starts
   system.setRunState(expressions.get());
 }
 

@@ -25,9 +25,18 @@ class RunStateIntegrator final : public solvers::Integrator {
     record();
   }
   bool setNextStepSize(double h) override { return inner_.setNextStepSize(h); }
+  // A step that leaves a PTCV point or a CVCV contact past an OPEN curve's end is accepted
+  // and then reported as the run's failure (ADAMS stops there too; docs/theory.md §5d).
   bool step(double tout) override {
     if (!inner_.step(tout)) return false;
     record();
+    if (!run_.curveRunOff().empty()) {
+      runOff_ = inner_.failure();
+      runOff_.time = inner_.t();
+      runOff_.reason = run_.curveRunOff();
+      runOff_.worstEquation = runOff_.worstVariable = -1;
+      return false;
+    }
     return true;
   }
   double t() const override { return inner_.t(); }
@@ -38,7 +47,9 @@ class RunStateIntegrator final : public solvers::Integrator {
     inner_.interpolate(s, y, yp);
   }
   const solvers::IntegratorStatistics& statistics() const override { return inner_.statistics(); }
-  const solvers::IntegratorFailure& failure() const override { return inner_.failure(); }
+  const solvers::IntegratorFailure& failure() const override {
+    return runOff_.reason.empty() ? inner_.failure() : runOff_;
+  }
   std::vector<std::string> warnings() const override { return inner_.warnings(); }
 
  private:
@@ -47,6 +58,7 @@ class RunStateIntegrator final : public solvers::Integrator {
   solvers::Integrator& inner_;
   mechanics::ExpressionRunState& run_;
   const mechanics::MultibodySystem& system_;
+  solvers::IntegratorFailure runOff_;  // set once a curve run-off ends the run
 };
 
 }  // namespace openmss::analysis

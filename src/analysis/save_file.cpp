@@ -189,6 +189,7 @@ void readBody(Reader& r, SaveFile& f) {
   e.gseDiscrete.resize(r.count(r.fields("gse-discrete", 1)[0]));
   for (auto& xd : e.gseDiscrete) xd = r.vector("xd");
   e.frictionAnchors = r.vector("friction-anchors");
+  e.curveParameters = r.vector("curve-parameters");
   if (f.system) {
     f.datasetPath = r.text("dataset-path");
     f.datasetText = r.text("dataset");
@@ -235,7 +236,8 @@ std::string modelFingerprint(const mechanics::MultibodySystem& system,
   ids("REQUEST", m.requests);
   const auto snap = run.snapshot();
   d += " angles " + std::to_string(snap.angleReferences.size()) + " delays " +
-       std::to_string(snap.delays.size()) + " coupled " + std::to_string(snap.coupled.size());
+       std::to_string(snap.delays.size()) + " coupled " + std::to_string(snap.coupled.size()) +
+       " curve-parameters " + std::to_string(snap.curveParameters.size());
   for (const auto& xd : snap.gseDiscrete) d += " xd " + std::to_string(xd.size());
   return hex64(fnv1a(d));
 }
@@ -318,6 +320,7 @@ std::string encodeSaveFile(const SaveFile& f) {
   w.line("gse-discrete " + std::to_string(e.gseDiscrete.size()));
   for (const auto& xd : e.gseDiscrete) w.vector("xd", xd);
   w.vector("friction-anchors", e.frictionAnchors);
+  w.vector("curve-parameters", e.curveParameters);
   if (f.system) {
     w.text("dataset-path", f.datasetPath);
     w.text("dataset", f.datasetText);

@@ -18,7 +18,7 @@
 
 namespace openmss::analysis {
 
-inline constexpr int kSaveFormatVersion = 1;
+inline constexpr int kSaveFormatVersion = 2;  // 2: curve-parameters
 
 // The build identity written into and required of save files: numbers of another build may
 // differ in the last bit, so continuation could not be promised bit-identical.

@@ -48,11 +48,44 @@ V3<S> curveDerivative(const BSplineCurve& curve, const S& alpha, int k) {
   return out;
 }
 
-// The parameter of the curve point nearest to q (RM coordinates), double: the best of a coarse
-// sampling of [-1, 1] refined by Newton on g. Deterministic: the samples and iteration count
-// are fixed. A closed curve is periodic in alpha; an open one is extended past its ends by its
-// end pieces (BSplineCurve), so alpha may leave [-1, 1] when the point runs off an end.
-inline double nearestCurveParameter(const BSplineCurve& curve, const V3<double>& q, int samples) {
+// Newton on g from a warm start (the parameter of the last accepted state): accepted when it
+// converges within 12 steps of at most one sample interval each, at a minimum (g' > 0), no
+// farther than 4 sample intervals from the start; otherwise false (the caller searches the
+// whole curve). The result depends only on the start, so runs stay bit-identical.
+inline bool localCurveParameter(const BSplineCurve& curve, const V3<double>& q, int samples,
+                                double start, double& out) {
+  const double step = 2.0 / samples;
+  double a = start;
+  bool closing = false;  // the step before was already small: this one polishes
+  for (int it = 0; it < 12; ++it) {
+    const V3<double> c = curveDerivative(curve, a, 0), c1 = curveDerivative(curve, a, 1),
+                     c2 = curveDerivative(curve, a, 2);
+    const double g = dot(c - q, c1), dg = dot(c1, c1) + dot(c - q, c2);
+    if (!(dg > 0.0)) return false;
+    const double da = std::max(-step, std::min(step, -g / dg));
+    a += da;
+    if (std::abs(a - start) > 4.0 * step) return false;
+    if (closing) {
+      out = a;
+      return true;
+    }
+    closing = std::abs(da) < 1e-9 * (1.0 + std::abs(a));
+  }
+  return false;
+}
+
+// The parameter of the curve point nearest to q (RM coordinates), double: from the warm start
+// when given (finite) and the local Newton accepts it, otherwise the best of a coarse sampling
+// of [-1, 1] refined by Newton on g. Deterministic: the samples and iteration count are fixed.
+// A closed curve is periodic in alpha; an open one is extended past its ends by its end pieces
+// (BSplineCurve), so alpha may leave [-1, 1] when the point runs off an end (the run stops at
+// the next accepted state, ExpressionRunState::curveRunOff).
+inline double nearestCurveParameter(const BSplineCurve& curve, const V3<double>& q, int samples,
+                                    const double* warm = nullptr) {
+  if (warm && std::isfinite(*warm)) {
+    double a = 0.0;
+    if (localCurveParameter(curve, q, samples, *warm, a)) return a;
+  }
   auto point = [&](double a) { return curveDerivative(curve, a, 0); };
   double best = -1.0, bestDistance = INFINITY;
   for (int s = 0; s <= samples; ++s) {
@@ -83,9 +116,9 @@ inline double nearestCurveParameter(const BSplineCurve& curve, const V3<double>&
 // The two equations e_0, e_1 of a PTCV for I's origin q in RM coordinates (any scalar).
 template <class S>
 std::array<S, 2> pointCurveResiduals(const BSplineCurve& curve, int helperAxis, int samples,
-                                     const V3<S>& q) {
+                                     const V3<S>& q, const double* warm = nullptr) {
   const V3<double> q0(valueOf(q[0]), valueOf(q[1]), valueOf(q[2]));
-  S alpha(nearestCurveParameter(curve, q0, samples));
+  S alpha(nearestCurveParameter(curve, q0, samples, warm));
   if constexpr (!std::is_same_v<S, double>) {
     for (int step = 0; step < 2; ++step) {  // exact first and second derivatives of alpha*
       const V3<S> c = curveDerivative(curve, alpha, 0), c1 = curveDerivative(curve, alpha, 1),

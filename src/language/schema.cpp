@@ -34,7 +34,11 @@ std::vector<StatementSpec> finalStatementTable() {
   markSupported(t, {"TITLE", "UNITS", "PART", "MARKER", "JOINT", "MOTION", "SFORCE", "ACCGRAV",
                     "REQUEST", "GRAPHICS", "OUTPUT", "END", "SPRINGDAMPER", "BUSHING", "FIELD",
                     "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC", "INTEGRATOR",
-                    "KINEMATICS", "DEBUG", "MATERIAL", "CONTACT"});
+                    "KINEMATICS", "DEBUG", "MATERIAL", "CONTACT",
+                    // what model/model_builder.cpp builds besides (its supportedStatements)
+                    "NFORCE", "JPRIM", "GCON", "PTCV", "CVCV", "COUPLER", "GEAR", "FRICTION",
+                    "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO", "PINPUT", "POUTPUT", "GSE",
+                    "SENSOR", "RESULTS", "SPLINE", "CURVE", "MATRIX", "STRING"});
   return t;
 }
 

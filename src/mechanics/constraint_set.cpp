@@ -122,6 +122,7 @@ int ConstraintSet::grueblerCount(const model::Model& model) {
   count -= static_cast<int>(model.couplers.size() + model.gears.size());
   count -= static_cast<int>(model.gcons.size());
   count -= 2 * static_cast<int>(model.ptcvs.size());  // PTCV removes two (docs/theory.md §5d)
+  count -= 2 * static_cast<int>(model.cvcvs.size());  // CVCV removes two (docs/theory.md §5e)
   return count;
 }
 
@@ -245,6 +246,32 @@ ConstraintEquation pointCurveEquation(const model::Model& model, int k, int n) {
   e.axisJ = static_cast<int>(std::min_element(worst, worst + 3) - worst);
   e.axisI = n;
   e.label = n == 0 ? "N1.(I-curve)" : "N2.(I-curve)";
+  return e;
+}
+
+// Samples of a curve's coarse search: 4 per MATRIX row, at least 64.
+int curveSamplesOf(const model::Model& model, const model::CurveData& data) {
+  const auto matrix = model.matrixIndex.find(data.matrixId);
+  const int rows = matrix == model.matrixIndex.end()
+                       ? 16
+                       : static_cast<int>(model.matrices[matrix->second].values.rows());
+  return std::max(64, 4 * rows);
+}
+
+// Equation n (0: along the common normal, 1: along z of IRM) of CVCV k (docs/theory.md §5e).
+ConstraintEquation curveCurveEquation(const model::Model& model, int k, int n) {
+  const model::CurveCurve& c = model.cvcvs[k];
+  ConstraintEquation e;
+  e.kind = ConstraintEquation::Kind::CurveCurve;
+  e.iMarker = c.iRm;
+  e.jMarker = c.jRm;
+  e.cvcv = k;
+  e.curve = model.curves[c.iCurve].curve.get();
+  e.curveSamples = curveSamplesOf(model, model.curves[c.iCurve]);
+  e.curveJ = model.curves[c.jCurve].curve.get();
+  e.curveSamplesJ = curveSamplesOf(model, model.curves[c.jCurve]);
+  e.axisI = n;
+  e.label = n == 0 ? "N.(Jcurve-Icurve)" : "Zirm.(Jcurve-Icurve)";
   return e;
 }
 
@@ -410,6 +437,16 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
     eqs_.push_back(generalEquation(model, k));
   for (int k = 0; k < static_cast<int>(model.ptcvs.size()); ++k)
     for (int n = 0; n < 2; ++n) eqs_.push_back(pointCurveEquation(model, k, n));
+  for (int k = 0; k < static_cast<int>(model.cvcvs.size()); ++k)
+    for (int n = 0; n < 2; ++n) eqs_.push_back(curveCurveEquation(model, k, n));
+  // PTCV (one) and CVCV (two) curve parameters in element order: their committed values'
+  // places in the run state (both equations of an element share them).
+  for (ConstraintEquation& e : eqs_) {
+    if (e.kind == ConstraintEquation::Kind::PointCurve) e.curveSlot = e.ptcv;
+    if (e.kind == ConstraintEquation::Kind::CurveCurve)
+      e.curveSlot = static_cast<int>(model.ptcvs.size()) + 2 * e.cvcv;
+  }
+  curveParameterCount_ = static_cast<int>(model.ptcvs.size() + 2 * model.cvcvs.size());
   // Coupled rotation terms in equation order: their committed angles' places in the run state.
   int slot = 0;
   for (ConstraintEquation& e : eqs_)
@@ -421,6 +458,11 @@ void ConstraintSet::bindCoupledAngles(const double* angles) {
   for (ConstraintEquation& e : eqs_)
     for (ConstraintEquation::CoupledTerm& t : e.terms)
       t.committed = t.slot >= 0 && angles ? angles + t.slot : nullptr;
+}
+
+void ConstraintSet::bindCurveParameters(const double* parameters) {
+  for (ConstraintEquation& e : eqs_)
+    e.warm = e.curveSlot >= 0 && parameters ? parameters + e.curveSlot : nullptr;
 }
 
 std::string ConstraintSet::describe(int k, const model::Model& model) const {
@@ -441,6 +483,8 @@ std::string ConstraintSet::describe(int k, const model::Model& model) const {
     return "GEAR/" + std::to_string(model.gears[e.gear].id) + " equation " + e.label;
   if (e.ptcv >= 0)
     return "PTCV/" + std::to_string(model.ptcvs[e.ptcv].id) + " equation " + e.label;
+  if (e.cvcv >= 0)
+    return "CVCV/" + std::to_string(model.cvcvs[e.cvcv].id) + " equation " + e.label;
   if (e.gcon >= 0)
     return "GCON/" + std::to_string(model.gcons[e.gcon].id) + " equation " + e.label;
   return "MOTION/" + std::to_string(model.motions[e.motion].id) + " equation " + e.label;

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "common/curve_contact.hpp"
 #include "common/curve_projection.hpp"
 #include "common/vec3.hpp"
 #include "mechanics/pose.hpp"
@@ -33,6 +34,9 @@ struct ConstraintEquation {
     PointCurve,         // PTCV: normal component `axisI` (0, 1) of I's offset from the
                         // nearest point of `curve` in J's (RM's) frame; helper axis `axisJ`
                         // (common/curve_projection.hpp, docs/theory.md §5d)
+    CurveCurve,         // CVCV: component `axisI` (0: common normal, 1: z of I) of the gap
+                        // between `curve` in I's (IRM's) frame and `curveJ` in J's (JRM's)
+                        // (common/curve_contact.hpp, docs/theory.md §5e)
   };
   // Coupled: one joint displacement of marker pair `pair` (0: iMarker, jMarker; 1, 2: the pairs
   // in moreMarkers), the rotation of x_I about z_J from x_J or the translation z_J.(P_I - P_J),
@@ -63,9 +67,18 @@ struct ConstraintEquation {
   int gear = -1;     // index into Model::gears, or -1
   int gcon = -1;     // index into Model::gcons, or -1
   int ptcv = -1;     // index into Model::ptcvs, or -1
+  int cvcv = -1;     // index into Model::cvcvs, or -1
   // PointCurve: the curve (owned by the Model) and the samples of its nearest-point search.
+  // CurveCurve: I's curve here, J's in curveJ, each with the samples of its coarse search.
   const BSplineCurve* curve = nullptr;
   int curveSamples = 0;
+  const BSplineCurve* curveJ = nullptr;
+  int curveSamplesJ = 0;
+  // PointCurve, CurveCurve: the committed curve parameter(s) of the last accepted state, the
+  // warm start of the search (run-state storage ExpressionRunState::curveParameters from entry
+  // `curveSlot`, one for a PTCV, two for a CVCV; null or NaN: global search only).
+  int curveSlot = -1;
+  const double* warm = nullptr;
   // General: the GCON's bound FUNCTION (owned by the Model) and, per measure k, the frame slots
   // (indices s of eq.marker(s)) of its markers i, j and k; -1 = ground.
   const model::BoundExpression* function = nullptr;
@@ -102,6 +115,10 @@ class ConstraintSet {
   std::vector<ConstraintEquation>& equations() { return eqs_; }
   // Points each coupled rotation term at angles[term.slot] (null: unbind), see CoupledTerm.
   void bindCoupledAngles(const double* angles);
+  // Points each curve equation at parameters[eq.curveSlot] (null: unbind), see `warm`.
+  void bindCurveParameters(const double* parameters);
+  // The number of run-state curve parameters (slots) of the PTCV and CVCV equations.
+  int curveParameterCount() const { return curveParameterCount_; }
   int size() const { return static_cast<int>(eqs_.size()); }
   // "JOINT/1 (REVOLUTE) equation Zi.Xj"
   std::string describe(int k, const model::Model& model) const;
@@ -141,6 +158,7 @@ class ConstraintSet {
 
  private:
   std::vector<ConstraintEquation> eqs_;
+  int curveParameterCount_ = 0;
 };
 
 // GCON equations (general_constraint.hpp, included at the end of this header).
@@ -211,8 +229,11 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
     case K::General:
       return generalConstraintValue(eq, frames);
     case K::PointCurve:
-      return pointCurveResiduals(*eq.curve, eq.axisJ, eq.curveSamples,
-                                 j.a.tmul(i.p - j.p))[eq.axisI];
+      return pointCurveResiduals(*eq.curve, eq.axisJ, eq.curveSamples, j.a.tmul(i.p - j.p),
+                                 eq.warm)[eq.axisI];
+    case K::CurveCurve:
+      return curveCurveResiduals(*eq.curve, eq.curveSamples, *eq.curveJ, eq.curveSamplesJ, i.p,
+                                 i.a, j.p, j.a, eq.warm)[eq.axisI];
   }
   return S(0.0);
 }

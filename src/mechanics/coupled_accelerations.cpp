@@ -29,6 +29,8 @@ bool netForceReadsReactions(const model::Model& m, const model::Measure& ms) {
     if (acts(j.iMarker, j.jMarker)) return true;
   for (const model::PointCurve& p : m.ptcvs)
     if (acts(p.iMarker, p.rmMarker)) return true;
+  for (const model::CurveCurve& c : m.cvcvs)
+    if (acts(c.iRm, c.jRm)) return true;
   return !m.gcons.empty();  // conservative: a GCON's markers are those its FUNCTION reads
 }
 
@@ -47,6 +49,8 @@ bool readBackReads(const model::Model& m, const model::Measure& ms, bool reactio
       return functionReads(m, m.sforces[ms.element].function, reactionsOnly, depth + 1);
     case K::VForceForce: case K::VTorqueForce: case K::GForceForce:
       return vector(ms.element);
+    case K::FrictionOutput:  // the normal force is the joint's reaction (its multipliers)
+      return true;
     case K::NetForce: {
       if (netForceReadsReactions(m, ms)) return true;
       auto acts = [&](int a, int b) {

@@ -1,7 +1,9 @@
 #include "mechanics/expression_run_state.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <limits>
+#include <string>
 
 #include "mechanics/multibody_system.hpp"
 
@@ -18,7 +20,11 @@ bool sameAngle(const model::Measure& a, const model::Measure& b) {
 }  // namespace
 
 ExpressionRunState::ExpressionRunState(const model::Model& m)
-    : frictionAnchors_(m.frictions.size()) {
+    : frictionAnchors_(m.frictions.size()),
+      // One per PTCV, two per CVCV (ConstraintSet numbers them the same way), so that a run
+      // state bound without trackCurveParameters still matches the equations' slots.
+      curveParameters_(m.ptcvs.size() + 2 * m.cvcvs.size(),
+                       std::numeric_limits<double>::quiet_NaN()) {
   for (const auto& f : m.sforces) addFunction(f.function);
   for (const auto& f : m.vectorForces)
     for (const auto& c : f.components)
@@ -55,14 +61,59 @@ void ExpressionRunState::trackCoupledAngles(const ConstraintSet& constraints) {
   coupled_ = coupledStart_;
 }
 
+void ExpressionRunState::trackCurveParameters(const ConstraintSet& constraints) {
+  curveParameters_.assign(static_cast<std::size_t>(constraints.curveParameterCount()),
+                          std::numeric_limits<double>::quiet_NaN());
+  curveRunOff_.clear();
+}
+
+// Commits the PTCV and CVCV curve parameters at y (each found from the previous committed
+// value, docs/theory.md §5d), all computed before any is written (the equations read the
+// buffer in place), and records the first point or contact past an OPEN curve's end.
+void ExpressionRunState::commitCurveParameters(const MultibodySystem& system, double t,
+                                               const Eigen::VectorXd& y) {
+  if (curveParameters_.empty()) return;
+  const model::Model& m = system.model();
+  std::vector<double> next(curveParameters_.size());
+  for (const ConstraintEquation& eq : system.constraints().equations()) {
+    if (eq.curveSlot < 0 || eq.axisI != 0) continue;  // once per element
+    double* out = next.data() + eq.curveSlot;
+    system.curveParameters(eq, y.data(), out);
+    if (!curveRunOff_.empty()) continue;
+    // 1e-9: the end itself is on the curve; round-off past it is not a run-off.
+    auto off = [](const BSplineCurve& c, double a) {
+      return !c.closed() && std::abs(a) > 1.0 + 1e-9;
+    };
+    std::string what;
+    int curve = -1;
+    if (eq.ptcv >= 0 && off(*eq.curve, out[0])) {
+      const model::PointCurve& p = m.ptcvs[static_cast<std::size_t>(eq.ptcv)];
+      what = "PTCV/" + std::to_string(p.id) + ": marker I ran off the end of OPEN CURVE/";
+      curve = p.curve;
+    } else if (eq.cvcv >= 0 && (off(*eq.curve, out[0]) || off(*eq.curveJ, out[1]))) {
+      const model::CurveCurve& c = m.cvcvs[static_cast<std::size_t>(eq.cvcv)];
+      what = "CVCV/" + std::to_string(c.id) + ": the contact point ran off the end of OPEN CURVE/";
+      curve = off(*eq.curve, out[0]) ? c.iCurve : c.jCurve;
+    }
+    if (curve < 0) continue;
+    char at[64] = "";
+    if (std::isfinite(t)) std::snprintf(at, sizeof at, " at time %.6E", t);
+    curveRunOff_ = what + std::to_string(m.curves[static_cast<std::size_t>(curve)].id) + at +
+                   " (ADAMS stops the run there too; docs/theory.md §5d)";
+  }
+  std::copy(next.begin(), next.end(), curveParameters_.begin());
+}
+
 void ExpressionRunState::commitCoupledAngles(const MultibodySystem& system,
-                                             const Eigen::VectorXd& y) {
+                                             const Eigen::VectorXd& y, double t) {
   const auto& eqs = system.constraints().equations();
   // Each term's cumulative angle at y, unwrapped against the committed value (geometry of the
   // term alone); the buffer is written in place (the equations hold a pointer into it).
   for (std::size_t s = 0; s < coupledSlots_.size(); ++s)
     coupled_[s] = system.coupledAngle(eqs[static_cast<std::size_t>(coupledSlots_[s].equation)],
                                       coupledSlots_[s].term, y.data());
+  // Statics and kinematics commit here: the curve parameters are committed with the angles.
+  commitCurveParameters(system, t, y);
 }
 
 void ExpressionRunState::addFunction(const model::BoundExpression& f) {
@@ -81,6 +132,9 @@ void ExpressionRunState::reset() {
   for (Angle& a : angles_) a.set = false;
   for (Delay& d : delays_) d.history.clear();
   std::copy(coupledStart_.begin(), coupledStart_.end(), coupled_.begin());
+  std::fill(curveParameters_.begin(), curveParameters_.end(),
+            std::numeric_limits<double>::quiet_NaN());
+  curveRunOff_.clear();
   for (friction::FrictionAnchor& a : frictionAnchors_) a = {};
 }
 
@@ -110,7 +164,7 @@ void ExpressionRunState::accept(const MultibodySystem& system, double t, const E
     angles_[k].set = true;
   }
   for (std::size_t k = 0; k < delays_.size(); ++k) delays_[k].history.record(t, delayed[k]);
-  commitCoupledAngles(system, y);
+  commitCoupledAngles(system, y, t);
   for (std::size_t k = 0; k < frictionAnchors_.size(); ++k)
     friction::updateAnchor(m, l, static_cast<int>(k), y.data(), frictionAnchors_[k]);
 }
@@ -135,6 +189,7 @@ ExpressionRunState::Snapshot ExpressionRunState::snapshot() const {
     for (int k = 0; k < 3; ++k) s.frictionAnchors.push_back(a.displacement[k]);
     for (int k = 0; k < 9; ++k) s.frictionAnchors.push_back(a.rotation.data()[k]);
   }
+  s.curveParameters = curveParameters_;
   return s;
 }
 
@@ -143,7 +198,8 @@ bool ExpressionRunState::restore(const Snapshot& s) {
       s.coupled.size() != coupled_.size() || s.sensorValues.size() != sensorValues_.size() ||
       s.gseLastSample.size() != gseLastSample_.size() ||
       s.gseDiscrete.size() != gseDiscrete_.size() ||
-      s.frictionAnchors.size() != 13 * frictionAnchors_.size())
+      s.frictionAnchors.size() != 13 * frictionAnchors_.size() ||
+      s.curveParameters.size() != curveParameters_.size())
     return false;
   for (std::size_t k = 0; k < gseDiscrete_.size(); ++k)
     if (s.gseDiscrete[k].size() != gseDiscrete_[k].size()) return false;
@@ -156,6 +212,7 @@ bool ExpressionRunState::restore(const Snapshot& s) {
     for (const auto& [t, v] : s.delays[k]) delays_[k].history.record(t, v);
   }
   std::copy(s.coupled.begin(), s.coupled.end(), coupled_.begin());  // in place: see above
+  std::copy(s.curveParameters.begin(), s.curveParameters.end(), curveParameters_.begin());
   sensorValues_ = s.sensorValues;
   gseLastSample_ = s.gseLastSample;
   gseDiscrete_ = s.gseDiscrete;

@@ -12,7 +12,9 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <limits>
 #include <numbers>
+#include <string>
 #include <vector>
 
 #include "common/dual.hpp"
@@ -60,8 +62,19 @@ class ExpressionRunState final : public expr::RunContext {
   // whole turns. Starts at each term's data-set angle; accept() commits, reset() restores.
   void trackCoupledAngles(const ConstraintSet& constraints);
   const std::vector<double>& coupledAngles() const { return coupled_; }
-  // Commits the coupled angles at y only (statics and kinematics call accept, which does too).
-  void commitCoupledAngles(const MultibodySystem& system, const Eigen::VectorXd& y);
+  // Commits the coupled angles and the curve parameters at y only (statics and kinematics
+  // call accept, which does too); t (NaN: unknown) dates a curve run-off.
+  void commitCoupledAngles(const MultibodySystem& system, const Eigen::VectorXd& y,
+                           double t = std::numeric_limits<double>::quiet_NaN());
+
+  // PTCV and CVCV curve parameters (ConstraintEquation::curveSlot numbers them): those of the
+  // last accepted state, the warm start of the next searches (docs/theory.md §5d). NaN (global
+  // search) until the first commit; committed with the coupled angles, reset() forgets them.
+  void trackCurveParameters(const ConstraintSet& constraints);
+  const std::vector<double>& curveParameters() const { return curveParameters_; }
+  // Set when a committed state has a PTCV point or a CVCV contact past the end of an OPEN
+  // curve (ADAMS stops the run there): what happened, naming the element and the time.
+  const std::string& curveRunOff() const { return curveRunOff_; }
 
   // SENVAL(id): the EVALUATE value of SENSOR k's last event (0 before any).
   double sensorValue(int k) const { return sensorValues_[static_cast<std::size_t>(k)]; }
@@ -89,6 +102,7 @@ class ExpressionRunState final : public expr::RunContext {
     model::AnalysisStatus status;
     // Per FRICTION, 13 numbers: set (0/1), displacement (3), rotation (9, column-major).
     std::vector<double> frictionAnchors;
+    std::vector<double> curveParameters;  // NaN: not set (save format 5)
   };
   Snapshot snapshot() const;
   bool restore(const Snapshot& s);
@@ -106,6 +120,7 @@ class ExpressionRunState final : public expr::RunContext {
     expr::DelayHistory history;
   };
   void addFunction(const model::BoundExpression& f);
+  void commitCurveParameters(const MultibodySystem& system, double t, const Eigen::VectorXd& y);
 
   std::vector<Angle> angles_;
   std::vector<Delay> delays_;
@@ -120,6 +135,8 @@ class ExpressionRunState final : public expr::RunContext {
   std::vector<std::vector<double>> gseDiscrete_;
   model::AnalysisStatus status_;
   std::vector<friction::FrictionAnchor> frictionAnchors_;  // one per FRICTION
+  std::vector<double> curveParameters_;
+  std::string curveRunOff_;
 };
 
 // The cumulative angle from its principal value: the principal value plus the whole turns

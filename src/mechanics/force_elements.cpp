@@ -96,6 +96,7 @@ bool ForceElements::netForceTakes(const ConstraintEquation& eq, int marker, int 
   if (eq.jprim >= 0) return acts(m.jprims[eq.jprim].iMarker, m.jprims[eq.jprim].jMarker);
   if (eq.motion >= 0) return acts(m.motions[eq.motion].iMarker, m.motions[eq.motion].jMarker);
   if (eq.ptcv >= 0) return acts(m.ptcvs[eq.ptcv].iMarker, m.ptcvs[eq.ptcv].rmMarker);
+  if (eq.cvcv >= 0) return acts(m.cvcvs[eq.cvcv].iRm, m.cvcvs[eq.cvcv].jRm);
   if (eq.gcon >= 0)
     return gconReads(m.gcons[eq.gcon], marker) &&
            (other < 0 || gconReads(m.gcons[eq.gcon], other));

@@ -10,6 +10,7 @@
 #include <optional>
 
 #include "mechanics/dynamic_measures.hpp"
+#include "mechanics/friction/friction_output.hpp"
 
 namespace openmss::mechanics {
 
@@ -76,6 +77,17 @@ void ForceElements::actionOn(ForceElementRef e, bool atJ, double t, const T* y,
 template <class T>
 bool ForceElements::readBack(const model::Measure& ms, double t, const T* y,
                              const DynamicReads<T>* reads, T* out) const {
+  if (ms.kind == model::MeasureKind::FrictionOutput) {
+    // FRICTION(id, index): the friction's loads and kinematics on T, as its force element
+    // computes them (the joint's multipliers through `reads`; docs/theory.md §13).
+    const friction::FrictionAnchor* anchor =
+        run_ != nullptr ? run_->frictionAnchor(ms.element) : nullptr;
+    *out = friction::frictionOutputOf(
+        friction::frictionLoads(*model_, layout_, reads != nullptr ? reads->constraints : nullptr,
+                                ms.element, y, anchor, analysisMode()),
+        ms.component);
+    return true;
+  }
   const std::optional<ForceElementRef> element = forceElementOfMeasure(ms.kind, ms.element);
   if (!element && ms.kind != model::MeasureKind::NetForce &&
       ms.kind != model::MeasureKind::NForceForce)

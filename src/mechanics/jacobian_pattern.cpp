@@ -162,6 +162,9 @@ class PatternBuilder {
       case K::NetForce:
         addNetForce(d, ms);
         return;
+      case K::FrictionOutput:  // FRICTION(id, index): what the friction's loads read
+        addElementReads(d, {ForceElementKind::Friction, ms.element});
+        return;
       default:
         // Any kind added later: not resolved here.
         d.all = true;
@@ -357,7 +360,7 @@ class PatternBuilder {
       switch (eq.kind) {
         case K::Point: case K::Dot: case K::Along: case K::MotionRotation:
         case K::MotionTranslation: case K::MotionAngle: case K::Convel: case K::RackPin:
-        case K::Screw: case K::Coupled: case K::PointCurve:
+        case K::Screw: case K::Coupled: case K::PointCurve: case K::CurveCurve:
           break;  // geometry of the marker frames (and a function of time)
         default:
           d.all = true;  // an equation kind whose reads are not known here

@@ -373,6 +373,22 @@ void MultibodySystem::reactionOf(Pick take, int marker, const double* y, Eigen::
   torque = a * torque - (pm - origin).cross(force);
 }
 
+void MultibodySystem::curveParameters(const ConstraintEquation& eq, const double* y,
+                                      double* out) const {
+  Frame<double> f[ConstraintEquation::kMaxMarkers];
+  equationFrames(eq, y, f);
+  if (eq.kind == ConstraintEquation::Kind::PointCurve) {
+    const V3<double> q = f[1].a.tmul(f[0].p - f[1].p);
+    out[0] = nearestCurveParameter(*eq.curve, q, eq.curveSamples, eq.warm);
+  } else if (eq.kind == ConstraintEquation::Kind::CurveCurve) {
+    std::array<double, 2> ab{};
+    curveCurveResiduals(*eq.curve, eq.curveSamples, *eq.curveJ, eq.curveSamplesJ, f[0].p, f[0].a,
+                        f[1].p, f[1].a, eq.warm, &ab);
+    out[0] = ab[0];
+    out[1] = ab[1];
+  }
+}
+
 std::pair<int, int> MultibodySystem::elementMarkers(ConstraintElement kind, int element) const {
   switch (kind) {
     case ConstraintElement::Joint:
@@ -393,6 +409,8 @@ std::pair<int, int> MultibodySystem::elementMarkers(ConstraintElement kind, int 
       return {model_->gcons[element].iMarker, -1};
     case ConstraintElement::PointCurve:
       return {model_->ptcvs[element].iMarker, model_->ptcvs[element].rmMarker};
+    case ConstraintElement::CurveCurve:
+      return {model_->cvcvs[element].iRm, model_->cvcvs[element].jRm};
   }
   return {-1, -1};
 }
@@ -410,6 +428,7 @@ void MultibodySystem::elementReaction(ConstraintElement kind, int element, int m
           case ConstraintElement::Gear: return eq.gear == element;
           case ConstraintElement::Gcon: return eq.gcon == element;
           case ConstraintElement::PointCurve: return eq.ptcv == element;
+          case ConstraintElement::CurveCurve: return eq.cvcv == element;
         }
         return false;
       },

@@ -39,7 +39,11 @@ class MultibodySystem {
     forces_.setRunState(run);
     user_.setRunState(run);
     constraints_.bindCoupledAngles(run ? run->coupledAngles().data() : nullptr);
+    constraints_.bindCurveParameters(run ? run->curveParameters().data() : nullptr);
   }
+  // PTCV (CVCV) equation eq's curve parameter alpha* ((alpha*, beta*)) at y, into out[0]
+  // (out[0..1]), found as the equations find them (docs/theory.md §5d, §5e).
+  void curveParameters(const ConstraintEquation& eq, const double* y, double* out) const;
   // The cumulative angle of rotation term `term` of coupled equation `eq` at y, its whole
   // turns counted against the committed angle (ExpressionRunState::commitCoupledAngles).
   double coupledAngle(const ConstraintEquation& eq, int term, const double* y) const;
@@ -111,7 +115,9 @@ class MultibodySystem {
   // has no function for them; JOINT(...) and FORCE requests of the coupled joints leave it out).
   // Gcon: the reaction of a GCON's equation on the part of its I marker (zero when the FUNCTION
   // does not read I, as ADAMS documents).
-  enum class ConstraintElement { Joint, Motion, JPrim, Coupler, Gear, Gcon, PointCurve };
+  enum class ConstraintElement {
+    Joint, Motion, JPrim, Coupler, Gear, Gcon, PointCurve, CurveCurve
+  };
   void elementReaction(ConstraintElement kind, int element, int marker, const double* y,
                        Eigen::Vector3d& force, Eigen::Vector3d& torque) const;
   // The I and J markers of a constraint element.

@@ -217,6 +217,17 @@ struct PointCurve {
   SourceLocation where;
 };
 
+// CVCV: CURVE `iCurve` (in the x-y plane of marker IRM) and CURVE `jCurve` (in the x-y plane of
+// marker JRM, on another part) stay in contact and tangent (docs/theory.md §5e). IFLOAT and
+// JFLOAT are contact markers on IRM's and JRM's parts; their poses are not computed.
+struct CurveCurve {
+  long id = 0;
+  int iRm = -1, jRm = -1;
+  int iFloat = -1, jFloat = -1;
+  int iCurve = -1, jCurve = -1;  // indices into Model::curves
+  SourceLocation where;
+};
+
 // FRICTION on a joint (docs/theory.md, "Joint friction"; mechanics/friction/): a force and/or
 // torque that opposes the slip of the joint, proportional to an equivalent normal force made of
 // the joint's reaction (multipliers), its preload and arms.
@@ -418,6 +429,7 @@ struct Model {
   std::vector<Gear> gears;        // GEAR
   std::vector<GeneralConstraint> gcons;  // GCON
   std::vector<PointCurve> ptcvs;         // PTCV (point_curve_builder.cpp)
+  std::vector<CurveCurve> cvcvs;         // CVCV (curve_curve_builder.cpp)
   std::vector<SForce> sforces;
   std::vector<SpringDamper> springDampers;
   std::vector<LinearField> linearFields;  // BUSHING, FIELD, BEAM

@@ -17,6 +17,7 @@
 #include "model/motion_builder.hpp"
 #include "model/part_builder.hpp"
 #include "model/point_curve_builder.hpp"
+#include "model/curve_curve_builder.hpp"
 #include "model/request_builder.hpp"
 #include "model/sensor_builder.hpp"
 #include "model/sforce_builder.hpp"
@@ -46,6 +47,8 @@ const std::set<std::string>& supportedStatements() {
                                           "GCON",
                                           // point-to-curve (point_curve_builder.cpp)
                                           "PTCV",
+                                          // curve-to-curve (curve_curve_builder.cpp)
+                                          "CVCV",
                                           // joint friction (friction_builder.cpp)
                                           "FRICTION",
                                           // user equations (user_equation_builder.cpp)
@@ -77,6 +80,7 @@ struct StatementGroups {
   std::vector<const Statement*> couplings;      // COUPLER, GEAR
   std::vector<const Statement*> gcons;          // GCON
   std::vector<const Statement*> ptcvs;          // PTCV
+  std::vector<const Statement*> cvcvs;          // CVCV
   std::vector<const Statement*> frictions;      // FRICTION
   std::vector<const Statement*> contacts;       // CONTACT
 };
@@ -137,6 +141,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       groups.gcons.push_back(&s);
     } else if (s.name == "PTCV") {
       groups.ptcvs.push_back(&s);
+    } else if (s.name == "CVCV") {
+      groups.cvcvs.push_back(&s);
     } else if (s.name == "FRICTION") {
       groups.frictions.push_back(&s);
     } else if (s.name == "CONTACT") {
@@ -418,13 +424,9 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
            "Read it with REQUEST/id, FORCE, I=<the PTCV's I>, J=<its RM or JFLOAT>.");
       continue;
     } else if (call.name == "CVCV") {
-      // Read-backs of elements the solver rejects at input (expr4): name the missing element.
-      const long eid = call.args.empty() ? 0 : call.args[0];
-      fail("reads the force of " + call.name + "/" + std::to_string(eid) + ", but " + call.name +
-               " elements are not supported by the solver (their statements are rejected at "
-               "input), so there is no force to read",
-           "Remove the " + call.name + " read-back, or model the element with SFORCE, VFORCE or "
-           "GFORCE and read that element instead.");
+      // ADAMS too reads CVCV reactions only in REQUESTs and SENSORs (docs/theory.md §5e).
+      fail("reads the reaction of a CVCV, which functions may not read yet",
+           "Read it with REQUEST/id, FORCE, I=<the CVCV's IRM>, J=<its JRM or JFLOAT>.");
       continue;
     } else {
       fail("this function is not supported yet by the solver",
@@ -472,6 +474,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   // GCON (general_constraint_builder.cpp): after every marker exists.
   buildGeneralConstraints(groups.gcons, model, diags);
   buildPointCurves(groups.ptcvs, model, diags);  // PTCV (point_curve_builder.cpp)
+  buildCurveCurves(groups.cvcvs, model, diags);  // CVCV (curve_curve_builder.cpp)
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).
   buildForceElements(groups.forceElements, model, diags);
   // GRAPHICS (graphics_builder.cpp): checked here, after every marker (errors and the kinds

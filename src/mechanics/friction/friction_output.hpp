@@ -16,27 +16,35 @@
 
 namespace openmss::mechanics::friction {
 
+// Index `index` of a friction result, on any scalar: the requests read it on double, force,
+// VARIABLE and DIFF functions on the residual's scalar (ForceElements::readBack), so that the
+// Newton matrix gets its exact partials (slip, creep, the joint's multipliers).
+template <class T>
+T frictionOutputOf(const FrictionResult<T>& r, int index) {
+  const FrictionKinematics<T>& k = r.kinematics;
+  if (index >= 1 && index <= 3) return r.forceJ[index - 1];
+  if (index >= 4 && index <= 6) return r.torqueJ[index - 4];
+  if (index >= 7 && index <= 12) return r.mu[index - 7];
+  if (index == 13) {
+    if (!r.active || r.regime != 0) return T(0.0);
+    T mu2(0.0);
+    for (const T& mu : r.mu) mu2 = mu2 + mu * mu;
+    // |mu| is not differentiable at 0; there the coefficient and its slope read as 0.
+    return valueOf(mu2) > 0.0 ? sqrtOf(mu2) : T(0.0);
+  }
+  if (index >= 14 && index <= 16) return k.slip[index - 14];
+  if (index >= 17 && index <= 19) return k.slip[index - 14] / k.channels.radius;
+  if (index >= 20 && index <= 22) return k.creep[index - 20];
+  return T(0.0);
+}
+
 inline double frictionOutput(const model::Model& m, const StateLayout& l,
                              const ConstraintSet* constraints, const ExpressionRunState* run,
                              int friction, int index, const double* y) {
   const FrictionAnchor* anchor = run != nullptr ? run->frictionAnchor(friction) : nullptr;
   const model::AnalysisMode mode =
       run != nullptr ? run->status().mode : model::AnalysisStatus{}.mode;
-  const FrictionResult<double> r = frictionLoads(m, l, constraints, friction, y, anchor, mode);
-  const FrictionKinematics<double>& k = r.kinematics;
-  if (index >= 1 && index <= 3) return r.forceJ[index - 1];
-  if (index >= 4 && index <= 6) return r.torqueJ[index - 4];
-  if (index >= 7 && index <= 12) return r.mu[index - 7];
-  if (index == 13) {
-    if (!r.active || r.regime != 0) return 0.0;
-    double mu2 = 0.0;
-    for (double mu : r.mu) mu2 += mu * mu;
-    return std::sqrt(mu2);
-  }
-  if (index >= 14 && index <= 16) return k.slip[index - 14];
-  if (index >= 17 && index <= 19) return k.slip[index - 14] / k.channels.radius;
-  if (index >= 20 && index <= 22) return k.creep[index - 20];
-  return 0.0;
+  return frictionOutputOf(frictionLoads(m, l, constraints, friction, y, anchor, mode), index);
 }
 
 }  // namespace openmss::mechanics::friction
