@@ -18,7 +18,10 @@ export PKG_CONFIG_PATH
 test "$(pkg-config --modversion openmss)" != ""
 soname=$(readelf -d "$libdir/libopenmss.so" | sed -n 's/.*SONAME.*\[\(.*\)\]/\1/p')
 test "$soname" = "libopenmss.so.1" || { echo "SONAME is '$soname'"; exit 1; }
-exported=$(nm -D --defined-only "$libdir/libopenmss.so" | awk '$2 == "T" {print $3}')
+# Every defined dynamic symbol (functions, weak template instantiations, data), except the
+# linker's own markers.
+exported=$(nm -D --defined-only "$libdir/libopenmss.so" |
+  awk '$3 !~ /^(_init|_fini|_edata|_end|__bss_start)$/ {print $3}')
 foreign=$(printf '%s\n' "$exported" | grep -v '^openmss_' || true)
 test -z "$foreign" || { echo "exported beyond the C API:"; printf '%s\n' "$foreign" | head; exit 1; }
 echo "exports: $(printf '%s\n' "$exported" | wc -l) openmss_* functions; SONAME $soname"
