@@ -17,6 +17,7 @@
 #include "commands/session.hpp"
 #include "language/command_reader.hpp"
 #include "mechanics/initial_conditions.hpp"
+#include "mechanics/user_state_solve.hpp"
 #include "openmss/openmss.h"
 
 namespace fs = std::filesystem;
@@ -115,6 +116,17 @@ openmss_status applyInputs(openmss_solver* s) {
                 "the state cannot be made consistent with the plant inputs at time " +
                     openmss::api::exactNumber(s->session->state()->t));
   return OPENMSS_OK;
+}
+
+// The user algebraic unknowns (VARIABLE values, ...) solved for the current positions,
+// velocities and differential states: the integrator's corrector leaves them converged only to
+// its own tolerance, and a plant output is read as the value its FUNCTION has at the state
+// (mechanics/user_state_solve.hpp, converged to 1e-12 (1 + |y|)).
+Eigen::VectorXd consistentState(const openmss_solver* s) {
+  const auto& st = *s->session->state();
+  Eigen::VectorXd y = st.y;
+  if (st.initialized) openmss::mechanics::solveUserAlgebraic(*s->session->system(), st.t, y);
+  return y;
 }
 
 }  // namespace
@@ -245,8 +257,8 @@ openmss_status openmss_get_poutput(const openmss_solver* solver, long poutput_id
                                             " VARIABLEs; the call asks for " +
                                             std::to_string(count));
   const auto& layout = solver->session->system()->layout();
-  for (int k = 0; k < count; ++k)
-    values[k] = solver->session->state()->y(layout.userAlg(p->variables[k]));
+  const Eigen::VectorXd y = consistentState(solver);
+  for (int k = 0; k < count; ++k) values[k] = y(layout.userAlg(p->variables[k]));
   return ok();
 }
 
@@ -256,7 +268,7 @@ openmss_status openmss_variable(const openmss_solver* solver, long variable_id, 
   const auto& vars = solver->session->model()->variables;
   for (std::size_t k = 0; k < vars.size(); ++k)
     if (vars[k].id == variable_id) {
-      *value = solver->session->state()->y(
+      *value = consistentState(solver)(
           solver->session->system()->layout().userAlg(static_cast<int>(k)));
       return ok();
     }
