@@ -1,14 +1,15 @@
 // The C embedding API (include/openmss/openmss.h, docs/embedding.md) over a commands::Session:
 // every call is a command the session executes (SIMULATE, SAVE, RELOAD, ...) or a read of its
 // run state, so an embedded run writes the .msg and .req that `openmss run` would write for
-// the same commands. Plant inputs are held by the solver and laid on the session's run state
-// before each analysis (Session::setPlantInputs), so they survive a rebuilt model or a RELOAD.
+// the same commands. Plant inputs are held by the solver and laid on the session's model and
+// run state before each analysis (Session::setPlantInputs), so that they survive a RELOAD.
 
 #include <cmath>
 #include <filesystem>
 #include <map>
 #include <memory>
 #include <new>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -81,6 +82,18 @@ openmss_status noPlantList(long id, bool inputs) {
   return fail(OPENMSS_ERROR_ARGUMENT, name + " is not in the data set");
 }
 
+// ACTIVATE, DEACTIVATE and the statement-redefining commands (commands/element_commands.cpp):
+// the session rebuilds the model from the data set and the edits at the next analysis. /LIST
+// alone only prints.
+bool changesModel(const openmss::language::Statement& c) {
+  static const std::set<std::string> names = {
+      "ACTIVATE", "DEACTIVATE", "PART",   "MARKER",   "JOINT",  "MOTION",       "GCON",   "ACCGRAV",
+      "BEAM",     "BUSHING",    "FIELD",  "GFORCE",   "SFORCE", "SPRINGDAMPER", "VFORCE", "VTORQUE",
+      "ARRAY",    "SPLINE",     "STRING", "VARIABLE", "DIFF",   "SENSOR",       "REQUEST"};
+  if (names.count(c.name) == 0) return false;
+  return !(c.args.size() == 1 && c.has("LIST"));
+}
+
 // Executes command text; OPENMSS_ERROR_INPUT when it does not read or is refused before any
 // analysis, OPENMSS_ERROR_ANALYSIS when its analysis fails.
 openmss_status execute(openmss_solver* s, const std::string& text) {
@@ -94,6 +107,15 @@ openmss_status execute(openmss_solver* s, const std::string& text) {
     if (d.severity == Severity::Error) return fail(OPENMSS_ERROR_INPUT, d);
   const auto commands = reader.takeCommands();
   if (commands.empty()) return fail(OPENMSS_ERROR_INPUT, "no command in \"" + text + "\"");
+  for (const auto& c : commands)
+    if (!s->inputs.empty() && changesModel(c))
+      return fail(OPENMSS_ERROR_STATE,
+                  c.subject() +
+                      " changes the model after plant inputs were set: the model it "
+                      "rebuilds at the next analysis would run that analysis with the "
+                      "data set's FUNCTION for the inputs. Give model-changing commands "
+                      "before the first openmss_set_pinput (docs/embedding.md).",
+                  c.where.file, c.where.line);
   for (const auto& c : commands) {
     const long stepsBefore = session.summary().steps;
     session.echoCommand(text);
@@ -268,8 +290,8 @@ openmss_status openmss_variable(const openmss_solver* solver, long variable_id, 
   const auto& vars = solver->session->model()->variables;
   for (std::size_t k = 0; k < vars.size(); ++k)
     if (vars[k].id == variable_id) {
-      *value = consistentState(solver)(
-          solver->session->system()->layout().userAlg(static_cast<int>(k)));
+      *value =
+          consistentState(solver)(solver->session->system()->layout().userAlg(static_cast<int>(k)));
       return ok();
     }
   return fail(OPENMSS_ERROR_ARGUMENT,

@@ -66,6 +66,16 @@ TEST(EmbeddingApi, WrongCallsAreRefusedWithoutChangingTheRun) {
   EXPECT_EQ(openmss_advance(s.handle(), 1.0, 0), OPENMSS_ERROR_ARGUMENT);
   EXPECT_EQ(openmss_command(s.handle(), "INTEGRATOR/NOSUCH"), OPENMSS_ERROR_INPUT);
   EXPECT_STRNE(openmss_last_error(), "");
+  // A model-changing command before any input is set: the rebuilt model holds m g' at rest.
+  s.command("ACCGRAV/JGRAV=-2");
+  s.initialize();
+  EXPECT_NEAR(s.request(2)[0], 2.0 * kM, 1e-9);
+  // After an input is set it is refused (its rebuilt model would lose the input).
+  s.setInputs(1, {0.5});
+  EXPECT_EQ(openmss_command(s.handle(), "SFORCE/1, FUNCTION=1"), OPENMSS_ERROR_STATE);
+  EXPECT_NE(std::string(openmss_last_error()).find("SFORCE/1 changes the model"), std::string::npos)
+      << openmss_last_error();
+  EXPECT_EQ(openmss_command(s.handle(), "ACCGRAV/LIST"), OPENMSS_OK);
   double v[8];
   EXPECT_EQ(openmss_request(s.handle(), 99, v), OPENMSS_ERROR_ARGUMENT);
   EXPECT_EQ(s.time(), 0.0);
