@@ -72,6 +72,15 @@ class Session final : private analysis::RunReport {
   // Message-file echo of a command, as ADAMS writes it.
   void echoCommand(const std::string& text);
 
+  // Embedding (docs/embedding.md; plant_inputs.cpp): VARIABLEs (indices into
+  // Model::variables, each listed by a PINPUT and without DELAY; the caller checks) hold the
+  // values given: their FUNCTION becomes that constant in the model at hand (a rebuilt or
+  // reloaded model has the data set's again). When the initial conditions hold, the user
+  // algebraic unknowns, the accelerations and the user state rates are made consistent at the
+  // current time, as at a GSE sample; positions, velocities and user differential states do
+  // not move. False when that fails.
+  bool setPlantInputs(const std::vector<std::pair<int, double>>& values);
+
  private:
   analysis::AnalysisContext context();
   bool dispatch(const language::Statement& command);

@@ -1,9 +1,9 @@
-// RCNVRT: rotation coordinates from one representation to another (c_rcnvrt and its gfortran
-// name rcnvrt_), through the rotation matrix and ADAMS's conventions of common/rotation.hpp.
-// Systems: EULER (= B313: psi, theta, phi), EULPAR (e0, e1, e2, e3), RODPAR (e/e0), COSINES
-// (nine direction cosines, column by column), YPR (= B321: yaw, pitch, roll) and the body-fixed
-// sequences Babc (B123, B231, B312, B132, B213, B321, B121, B131, B212, B232, B313, B323):
-// A = R_a(t1) R_b(t2) R_c(t3). docs/user-subroutines.md, "Other utilities".
+// RCNVRT and TCNVRT (below). RCNVRT: rotation coordinates from one representation to another
+// (c_rcnvrt and its gfortran name rcnvrt_), through the rotation matrix and ADAMS's conventions of
+// common/rotation.hpp. Systems: EULER (= B313: psi, theta, phi), EULPAR (e0, e1, e2, e3), RODPAR
+// (e/e0), COSINES (nine direction cosines, column by column), YPR (= B321: yaw, pitch, roll) and
+// the body-fixed sequences Babc (B123, B231, B312, B132, B213, B321, B121, B131, B212, B232, B313,
+// B323): A = R_a(t1) R_b(t2) R_c(t3). docs/user-subroutines.md, "Other utilities".
 
 #include <cctype>
 #include <cmath>
@@ -87,6 +87,45 @@ void convert(const std::string& from, const double* c1, const std::string& to, d
   *istat = toMatrix(from, c1, a) && fromMatrix(to, a, c2) ? 0 : 1;
 }
 
+// TCNVRT: a point's coordinates between CARTESIAN (x, y, z), CYLINDRICAL (r, theta, z) and
+// SPHERICAL (rho, phi, theta); theta is the azimuth from +x towards +y (atan2, -pi..pi), phi
+// the angle from +z (0..pi). ADAMS names the systems but not the angle conventions; these are
+// OpenMSS's (docs/user-subroutines.md, "Other utilities").
+bool toCartesian(const std::string& s, const double* c, double p[3]) {
+  if (s == "CARTESIAN") {
+    p[0] = c[0], p[1] = c[1], p[2] = c[2];
+  } else if (s == "CYLINDRICAL") {
+    p[0] = c[0] * std::cos(c[1]), p[1] = c[0] * std::sin(c[1]), p[2] = c[2];
+  } else if (s == "SPHERICAL") {
+    p[0] = c[0] * std::sin(c[1]) * std::cos(c[2]);
+    p[1] = c[0] * std::sin(c[1]) * std::sin(c[2]);
+    p[2] = c[0] * std::cos(c[1]);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool fromCartesian(const std::string& s, const double p[3], double* c) {
+  const double r = std::hypot(p[0], p[1]);
+  if (s == "CARTESIAN") {
+    c[0] = p[0], c[1] = p[1], c[2] = p[2];
+  } else if (s == "CYLINDRICAL") {
+    c[0] = r, c[1] = std::atan2(p[1], p[0]), c[2] = p[2];
+  } else if (s == "SPHERICAL") {
+    c[0] = std::hypot(r, p[2]), c[1] = std::atan2(r, p[2]), c[2] = std::atan2(p[1], p[0]);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+void convertPoint(const std::string& from, const double* c1, const std::string& to, double* c2,
+                  int* istat) {
+  double p[3];
+  *istat = toCartesian(from, c1, p) && fromCartesian(to, p, c2) ? 0 : 1;
+}
+
 }  // namespace
 
 void openmss::user::detail::anchorConversionUtilities() {}
@@ -102,6 +141,17 @@ void c_rcnvrt(const char* sys1, const double* coord1, const char* sys2, double* 
 void rcnvrt_(const char* sys1, const double* coord1, const char* sys2, double* coord2, int* istat,
              std::size_t lsys1, std::size_t lsys2) {
   convert(systemName(sys1, lsys1), coord1, systemName(sys2, lsys2), coord2, istat);
+}
+
+void c_tcnvrt(const char* sys1, const double* coord1, const char* sys2, double* coord2,
+              int* istat) {
+  convertPoint(systemName(sys1, std::string::npos), coord1, systemName(sys2, std::string::npos),
+               coord2, istat);
+}
+
+void tcnvrt_(const char* sys1, const double* coord1, const char* sys2, double* coord2, int* istat,
+             std::size_t lsys1, std::size_t lsys2) {
+  convertPoint(systemName(sys1, lsys1), coord1, systemName(sys2, lsys2), coord2, istat);
 }
 
 }  // extern "C"

@@ -213,6 +213,19 @@ void c_gtstrg(int id, char* string, int* nchars, int* istat);
  * unknown system. */
 void c_rcnvrt(const char* sys1, const double* coord1, const char* sys2, double* coord2,
               int* istat);
+/* Point coordinates from system sys1 to sys2: CARTESIAN (x, y, z), CYLINDRICAL (r, theta, z),
+ * SPHERICAL (rho, phi, theta); theta the azimuth from +x, phi the angle from +z; *istat
+ * nonzero on an unknown system. */
+void c_tcnvrt(const char* sys1, const double* coord1, const char* sys2, double* coord2,
+              int* istat);
+/* TIMGET's older name: the time of the last converged step. */
+void c_timegt(double* time);
+/* Analysis control, allowed only inside CONSUB (the CONTROL command, not supported yet): they
+ * do nothing, print why once, and set *istat = 1. */
+void c_analys(const char* antype, const char* cid, double timbeg, double timend, int init,
+              int* istat);
+void c_datout(int* istat);
+void c_modify(const char* comand, int* istat);
 /* Deterministic CPU time: always 0 (OpenMSS outputs are bit-identical run to run). */
 void c_getcpu(double* cpu);
 

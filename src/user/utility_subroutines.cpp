@@ -72,6 +72,21 @@ void sysary(const std::string& name, const int* ipar, int nsize, double* states,
   *errflg = d::elementCallActive() && d::elementSysary(name, ipar, nsize, states, nstates) ? 0 : 1;
 }
 
+// ANALYS, DATOUT, MODIFY: ADAMS allows them only inside CONSUB (the CONTROL command), which
+// OpenMSS does not run yet; from any other routine they do nothing and fail, saying so once
+// per utility (docs/user-subroutines.md, "Other utilities").
+void controlOnly(const char* name, int* istat) {
+  *istat = 1;
+  static thread_local std::string said;
+  if (said.find(name) != std::string::npos) return;
+  said += name;
+  std::fprintf(stderr,
+               "openmss: %s%s%s may be called only from CONSUB (the CONTROL command), which "
+               "OpenMSS does not support yet; it did nothing and returned istat = 1\n",
+               d::elementCallActive() ? d::elementWho().c_str() : "",
+               d::elementCallActive() ? ": " : "", name);
+}
+
 }  // namespace
 
 void openmss::user::detail::anchorUtilitySubroutines() {}
@@ -113,6 +128,20 @@ void c_timget(double* time) {
   *time = d::elementTime();
 }
 
+// TIMEGT: the older spelling of TIMGET, the same value (docs/user-subroutines.md).
+void c_timegt(double* time) { c_timget(time); }
+
+void c_analys(const char* antype, const char* cid, double timbeg, double timend, int init,
+              int* istat) {
+  (void)antype, (void)cid, (void)timbeg, (void)timend, (void)init;
+  controlOnly("ANALYS", istat);
+}
+void c_datout(int* istat) { controlOnly("DATOUT", istat); }
+void c_modify(const char* comand, int* istat) {
+  (void)comand;
+  controlOnly("MODIFY", istat);
+}
+
 void c_errmes(int errflg, const char* mesage, int id, const char* endflg) {
   errmes(errflg, mesage ? mesage : "", id, endflg ? endflg : "");
 }
@@ -144,6 +173,14 @@ void syspar_(const char* fncnam, const int* ipar, const int* nsize, const double
 void adams_needs_partials_(int* eval_jac) { c_adams_needs_partials(eval_jac); }
 
 void timget_(double* time) { c_timget(time); }
+void timegt_(double* time) { c_timget(time); }
+
+void analys_(const char*, const char*, const double*, const double*, const int*, int* istat,
+             std::size_t, std::size_t) {
+  controlOnly("ANALYS", istat);
+}
+void datout_(int* istat) { controlOnly("DATOUT", istat); }
+void modify_(const char*, int* istat, std::size_t) { controlOnly("MODIFY", istat); }
 
 void errmes_(const int* errflg, const char* mesage, const int* id, const char* endflg,
              std::size_t lmesage, std::size_t lendflg) {

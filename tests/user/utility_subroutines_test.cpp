@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include "common/rotation.hpp"
 #include "user/openmss_usersub.h"
@@ -102,6 +103,55 @@ TEST(UtilitySubroutines, RcnvrtRoundTripsAndKnownRotations) {
   c_rcnvrt("B123", b123, "COSINES", again, &istat);
   for (int k = 0; k < 9; ++k) EXPECT_NEAR(again[k], cosines[k], 1e-14);
   c_rcnvrt("EULER", euler, "NONSENSE", back, &istat);
+  EXPECT_EQ(istat, 1);
+}
+
+extern "C" void tcnvrt_(const char* sys1, const double* coord1, const char* sys2, double* coord2,
+                        int* istat, std::size_t lsys1, std::size_t lsys2);
+
+// TCNVRT against points whose coordinates are known in every system, and round trips.
+TEST(UtilitySubroutines, TcnvrtKnownPointsAndRoundTrips) {
+  int istat = 1, compared = 0;
+  // (1, 1, sqrt 2): r = sqrt 2, theta = pi/4; rho = 2, phi (from +z) = pi/4.
+  const double p[3] = {1.0, 1.0, std::sqrt(2.0)};
+  double cyl[3], sph[3], back[3];
+  c_tcnvrt("CARTESIAN", p, "CYLINDRICAL", cyl, &istat);
+  ASSERT_EQ(istat, 0);
+  const double wantCyl[3] = {std::sqrt(2.0), std::atan(1.0), std::sqrt(2.0)};
+  for (int k = 0; k < 3; ++k, ++compared) EXPECT_NEAR(cyl[k], wantCyl[k], 1e-15);
+  c_tcnvrt("cartesian", p, "SPHERICAL", sph, &istat);  // names in any case
+  ASSERT_EQ(istat, 0);
+  const double wantSph[3] = {2.0, std::atan(1.0), std::atan(1.0)};
+  for (int k = 0; k < 3; ++k, ++compared) EXPECT_NEAR(sph[k], wantSph[k], 1e-15);
+  c_tcnvrt("SPHERICAL", sph, "CYLINDRICAL", back, &istat);
+  for (int k = 0; k < 3; ++k, ++compared) EXPECT_NEAR(back[k], cyl[k], 1e-15);
+  c_tcnvrt("CYLINDRICAL", cyl, "CARTESIAN", back, &istat);
+  for (int k = 0; k < 3; ++k, ++compared) EXPECT_NEAR(back[k], p[k], 1e-15);
+  // The gfortran name, as a FORTRAN 77 caller passes it: blank-padded CHARACTER arguments with
+  // their lengths appended.
+  double f77[3];
+  tcnvrt_("CARTESIAN   ", p, "CYLINDRICAL ", f77, &istat, 12, 12);
+  EXPECT_EQ(istat, 0);
+  for (int k = 0; k < 3; ++k, ++compared) EXPECT_EQ(f77[k], cyl[k]);
+  EXPECT_EQ(compared, 15);
+  c_tcnvrt("POLAR", p, "CARTESIAN", back, &istat);
+  EXPECT_EQ(istat, 1);
+}
+
+// TIMEGT is TIMGET; ANALYS, DATOUT, MODIFY outside CONSUB fail with istat 1.
+TEST(UtilitySubroutines, TimegtAndTheConsubOnlyUtilities) {
+  double a = -1.0, b = -2.0;
+  c_timget(&a);
+  c_timegt(&b);
+  EXPECT_EQ(a, b);
+  int istat = 0;
+  c_analys("DYNAMICS", "run", 0.0, 1.0, 1, &istat);
+  EXPECT_EQ(istat, 1);
+  istat = 0;
+  c_datout(&istat);
+  EXPECT_EQ(istat, 1);
+  istat = 0;
+  c_modify("PART/1, MASS=10", &istat);
   EXPECT_EQ(istat, 1);
 }
 
