@@ -51,9 +51,10 @@ TEST(ContactCorpus, EveryRefusedContactNamesAShellFileOrAFrustumPair) {
       EXPECT_TRUE(shell || pair) << adm.filename().string() << ": " << text;
     }
   }
-  std::printf("corpus CONTACT: %d data sets, %d refusals (%d missing shell files, %d frustum "
-              "pairs)\n",
-              decks, refusals, shells, pairs);
+  std::printf(
+      "corpus CONTACT: %d data sets, %d refusals (%d missing shell files, %d frustum "
+      "pairs)\n",
+      decks, refusals, shells, pairs);
   EXPECT_EQ(decks, 4);  // the two LAUL analyses, camelot, adams_vscode's test
   EXPECT_EQ(refusals, shells + pairs);
   EXPECT_GT(shells, 0);
