@@ -13,6 +13,7 @@
 #include "analysis/integrator_factory.hpp"
 #include "analysis/multibody_dae.hpp"
 #include "analysis/run_state_integrator.hpp"
+#include "analysis/contact_events.hpp"
 #include "analysis/sensor_monitor.hpp"
 #include "analysis/transient_run.hpp"
 #include "mechanics/initial_conditions.hpp"
@@ -66,14 +67,20 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
   writeBanner(run, plan);
   MultibodyDae dae(run.system);
   const std::unique_ptr<solvers::Integrator> method = makeIntegrator(plan, run.system, dae, end);
+  // CONTACT onsets restart the method at the located first touch (contact_events.hpp).
+  ContactEventIntegrator contactEvents(*method, run.system);
   // Accepted steps and restarts update the expression run state (run_state_integrator.hpp).
-  RunStateIntegrator integrator(*method, *s.expressions, run.system);
+  RunStateIntegrator integrator(contactEvents, *s.expressions, run.system);
   // Advice from the method as it appears (ABAM's stiffness warning), each line once.
-  std::size_t warningsShown = 0;
+  std::size_t warningsShown = 0, contactLinesShown = 0;
   auto showIntegratorWarnings = [&]() {
     const std::vector<std::string> lines = integrator.warnings();
     for (; warningsShown < lines.size(); ++warningsShown)
       run.warning(nullptr, lines[warningsShown]);
+    // Contact onsets and separations, with DEBUG/EPRINT (theory §6c, "Events").
+    for (; m.debug.eprint && contactLinesShown < contactEvents.events().size();
+         ++contactLinesShown)
+      run.report.line(ContactEventIntegrator::describe(contactEvents.events()[contactLinesShown]));
   };
   EprintLog eprint(run.report, dae);           // DEBUG/EPRINT: per step and iteration, to the .msg
   if (m.debug.eprint) eprint.attach(*method);  // observers live on the method itself

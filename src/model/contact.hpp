@@ -3,10 +3,9 @@
 // from GRAPHICS statements, and the normal and friction laws. Built by contact_builder.cpp;
 // the forces are computed by mechanics/contact/.
 
+#include <Eigen/Dense>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 #include "common/source_location.hpp"
 
@@ -15,21 +14,29 @@ namespace openmss::model {
 // One solid from a GRAPHICS statement, fixed to the part of its reference marker.
 struct ContactSolid {
   enum class Shape {
-    Sphere,    // ELLIPSOID with XSCALE = YSCALE = ZSCALE (the diameter): centre at the CM marker
-    Box,       // BOX: CORNER marker, extents X, Y, Z along its axes (each may be negative)
-    Cylinder,  // CYLINDER: CM marker at the centre of the bottom disc, LENGTH along z, RADIUS
+    Sphere,  // ELLIPSOID with XSCALE = YSCALE = ZSCALE (the diameter): centre at the CM marker
+    Box,     // BOX: CORNER marker, extents X, Y, Z along its axes (each may be negative)
+    // CYLINDER (RADIUS) or FRUSTUM (BOTTOM, TOP): CM marker at the centre of the bottom disc,
+    // LENGTH along its z axis (negative: along -z); a cylinder is a frustum with equal radii.
+    Frustum,
   };
   Shape shape = Shape::Sphere;
   long graphicsId = 0;
   int marker = -1;  // the reference marker (CM or CORNER)
   int part = -1;
-  // Sphere: radius in x. Box: the extents X, Y, Z. Cylinder: radius in x, length in z.
+  // Sphere: radius in x. Box: the extents X, Y, Z. Frustum: bottom radius in x, top radius in
+  // y, LENGTH in z.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
   // Radius of a sphere about the reference marker's origin that holds the solid: the
   // bounding test that skips far pairs before the narrow phase (theory §6c, "Broad phase").
   double boundingRadius = 0.0;
   SourceLocation where;
 };
+
+// Whether the narrow phase (mechanics/contact) covers the pair: every pair but two frustums.
+inline bool contactPairSupported(ContactSolid::Shape a, ContactSolid::Shape b) {
+  return a != ContactSolid::Shape::Frustum || b != ContactSolid::Shape::Frustum;
+}
 
 struct Contact {
   enum class NormalLaw { Impact, Poisson };

@@ -13,6 +13,43 @@ namespace {
 using language::Argument;
 using language::Statement;
 
+// CYLINDER (RADIUS) or FRUSTUM (BOTTOM, TOP): a solid of revolution about the CM marker's z
+// axis from the CM origin over LENGTH (theory §6c); false after a diagnostic at `where`.
+bool readFrustum(const Statement& g, const std::string& kind, const Model& model,
+                 const SourceLocation& where, const std::string& subject, Diagnostics& diags,
+                 ContactSolid& out) {
+  const bool cylinder = kind == "CYLINDER";
+  const double bottom = graphicsNumber(g, cylinder ? "RADIUS" : "BOTTOM");
+  const double top = cylinder ? bottom : graphicsNumber(g, "TOP");
+  const double length = graphicsNumber(g, "LENGTH");
+  if (!(bottom >= 0.0) || !(top >= 0.0) || bottom + top == 0.0 || !(length != 0.0)) {
+    diags.error(
+        where, subject,
+        graphicsAt(g) + " is a " + kind + " with " +
+            (cylinder ? "RADIUS = " + std::to_string(bottom)
+                      : "BOTTOM = " + std::to_string(bottom) + ", TOP = " + std::to_string(top)) +
+            " and LENGTH = " + std::to_string(length) + ": it has no volume",
+        cylinder ? "Give RADIUS > 0 and LENGTH different from 0."
+                 : "Give BOTTOM, TOP >= 0 (not both 0) and LENGTH different from 0.");
+    return false;
+  }
+  if (const Argument* r = g.find("RANGLE"); r && !r->values.empty()) {
+    const double angle = r->values[0].number;  // radians (a D suffix is converted on reading)
+    if (std::abs(angle) < 2.0 * M_PI * (1.0 - 1e-9)) {
+      diags.error(where, subject,
+                  graphicsAt(g) + " is a partial " + kind + " (RANGLE = " + r->values[0].written +
+                      "): contact needs the full solid of revolution",
+                  "Remove RANGLE (or give 360D) from the GRAPHICS used for contact.");
+      return false;
+    }
+  }
+  out.shape = ContactSolid::Shape::Frustum;
+  out.size = Eigen::Vector3d(bottom, top, length);
+  out.boundingRadius = std::hypot(std::max(bottom, top), length);
+  out.marker = graphicsMarker(g, "CM", model, where, subject, diags);
+  return true;
+}
+
 // One GRAPHICS solid for a CONTACT; false after a diagnostic at `where` (the IGEOM/JGEOM value).
 bool readSolid(const Statement& g, const Model& model, const SourceLocation& where,
                const std::string& subject, Diagnostics& diags, ContactSolid& out) {
@@ -57,25 +94,29 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
                   graphicsAt(g) + " reads its shell from the file '" + file +
                       "', which is missing (" + path.string() + ")",
                   "Put the file next to the data set, or replace the EXTERNAL geometry by "
-                  "ELLIPSOID or BOX solids.");
+                  "ELLIPSOID, BOX, CYLINDER or FRUSTUM solids.");
     } else {
       diags.error(where, subject,
                   graphicsAt(g) + " is an EXTERNAL shell (" + file +
                       "): shell and Parasolid files are not read yet",
-                  "Replace it by ELLIPSOID (sphere) or BOX solids.");
+                  "Replace it by ELLIPSOID (sphere), BOX, CYLINDER or FRUSTUM solids.");
     }
     return false;
-  } else if (kind == "CYLINDER" || kind == "FRUSTUM" || kind == "TORUS" || kind == "PLANE") {
+  } else if (kind == "CYLINDER" || kind == "FRUSTUM") {
+    if (!readFrustum(g, kind, model, where, subject, diags, out)) return false;
+  } else if (kind == "TORUS" || kind == "PLANE") {
     diags.error(where, subject,
                 graphicsAt(g) + " is a " + kind + ": contact with it is not supported yet",
-                "Use ELLIPSOID (sphere) or BOX solids; a floor is a large BOX.");
+                "Use ELLIPSOID (sphere), BOX, CYLINDER or FRUSTUM solids; a floor is a large "
+                "BOX.");
     return false;
   } else {
     diags.error(where, subject,
                 graphicsAt(g) + " is " +
                     (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
                     ": CONTACT needs solids (a volume)",
-                "Name ELLIPSOID (sphere) or BOX GRAPHICS in IGEOM and JGEOM.");
+                "Name ELLIPSOID (sphere), BOX, CYLINDER or FRUSTUM GRAPHICS in IGEOM and "
+                "JGEOM.");
     return false;
   }
   if (out.marker < 0) return false;
@@ -203,6 +244,23 @@ void rejectUnsupported(StatementArguments& a) {
     a.unsupported(*a.find("TYPE"), "Only TYPE = SOLID_TO_SOLID is supported.");
 }
 
+// Every I solid against every J solid must be a pair the narrow phase covers (theory §6c):
+// two solids of revolution (CYLINDER, FRUSTUM) are not yet; one located message per pair.
+bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
+  bool ok = true;
+  for (const ContactSolid& a : c.iSolids)
+    for (const ContactSolid& b : c.jSolids)
+      if (!contactPairSupported(a.shape, b.shape)) {
+        diags.error(s.where, s.subject(),
+                    "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
+                        std::to_string(b.graphicsId) +
+                        ": contact between two CYLINDER/FRUSTUM solids is not supported yet",
+                    "Model one of the two as ELLIPSOID (sphere) or BOX solids.");
+        ok = false;
+      }
+  return ok;
+}
+
 }  // namespace
 
 void buildContacts(const std::vector<const Statement*>& statements,
@@ -221,7 +279,7 @@ void buildContacts(const std::vector<const Statement*>& statements,
     readFriction(a, c);
     if (const Argument* f = a.find("FACETING_TOLERANCE"))
       diags.warning(f->where, s->subject(),
-                    "FACETING_TOLERANCE has no effect: spheres and boxes are exact",
+                    "FACETING_TOLERANCE has no effect: the solids are exact, not faceted",
                     "Remove it to silence this warning.");
     const bool iOk = readSide(*s, "IGEOM", graphics, model, diags, c.iSolids, c.iPart);
     const bool jOk = readSide(*s, "JGEOM", graphics, model, diags, c.jSolids, c.jPart);
@@ -233,6 +291,7 @@ void buildContacts(const std::vector<const Statement*>& statements,
                   "Name the solids of two different parts.");
       continue;
     }
+    if (!pairsSupported(*s, c, diags)) continue;
     c.iMarker = c.iSolids.front().marker;
     c.jMarker = c.jSolids.front().marker;
     model.contacts.push_back(c);

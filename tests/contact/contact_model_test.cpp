@@ -131,45 +131,6 @@ TEST(ContactModel, ReadBackGivesTheForceOnEachPart) {
   for (int k = 0; k < 7; ++k) EXPECT_NEAR(c[k], expected[k], 1e-12 * fn) << "F" << k + 1;
 }
 
-// dG/dy of the residual: the Newton matrix with cj = 0 against central differences.
-void checkJacobian(const std::string& text, const Eigen::VectorXd& velocity) {
-  const model::Model m = build(text);
-  mechanics::MultibodySystem s(m);
-  // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
-  mechanics::ExpressionRunState run(m);
-  run.status().mode = model::AnalysisMode::Dynamics;
-  s.setRunState(&run);
-  Eigen::VectorXd y = s.initialState();
-  y.segment<3>(StateLayout::kV) = velocity.head<3>();
-  y.segment<3>(StateLayout::kW) = velocity.tail<3>();
-  const Eigen::VectorXd yp = Eigen::VectorXd::Zero(y.size());
-  Eigen::MatrixXd exact;
-  s.newtonMatrix(0.0, y, yp, 0.0, exact);
-  const int n = static_cast<int>(y.size());
-  Eigen::VectorXd gp(n), gm(n);
-  double worst = 0.0, scale = 0.0;
-  int columns = 0;
-  for (int c = 0; c < n; ++c) {
-    const double h = 1e-7;
-    Eigen::VectorXd a = y, b = y;
-    a(c) += h;
-    b(c) -= h;
-    s.residual(0.0, a.data(), yp.data(), gp.data());
-    s.residual(0.0, b.data(), yp.data(), gm.data());
-    const Eigen::VectorXd fd = (gp - gm) / (2 * h);
-    worst = std::max(worst, (fd - exact.col(c)).cwiseAbs().maxCoeff());
-    scale = std::max(scale, exact.col(c).cwiseAbs().maxCoeff());
-    ++columns;
-  }
-  std::printf(
-      "contact Jacobian: max |exact - central difference| %.3e of max entry %.3e over "
-      "%d columns\n",
-      worst, scale, columns);
-  EXPECT_EQ(columns, n);
-  // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches.
-  EXPECT_LT(worst, 1e-6 * scale);
-}
-
 const char* kFrictionLaw =
     "COULOMB_FRICTION=ON, MU_STATIC=0.5, MU_DYNAMIC=0.3, STICTION_TRANSITION_VELOCITY=0.1, "
     "FRICTION_TRANSITION_VELOCITY=1\n";
@@ -222,21 +183,23 @@ TEST(ContactModel, BoxOnBoxPartialsAreExact) {
 TEST(ContactModel, SparsePatternHoldsTheContactEntries) {
   // A sphere (part 2) in a moving box (part 3) and a third, free body (part 4): the contact
   // couples parts 2 and 3 only, and the pattern must hold every entry it creates.
-  const model::Model m = build(std::string(
-      "sparse pattern\n"
-      "PART/1, GROUND\n"
-      "PART/3, MASS=5, CM=30, IP=1,1,1, QG=0,0,-0.5\n"
-      "MARKER/30, PART=3\n"
-      "MARKER/31, PART=3, QP=-1,-1,-0.5\n"
-      "GRAPHICS/1, BOX, CORNER=31, X=2, Y=2, Z=1\n"
-      "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0.1,0.2,0.098, VX=1, VY=0.3, VZ=-0.2, "
-      "WX=1, WY=2\n"
-      "MARKER/20, PART=2\n"
-      "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
-      "PART/4, MASS=1, CM=40, IP=1,1,1, QG=5,5,5\n"
-      "MARKER/40, PART=4\n"
-      "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=50, DMAX=1e-3, "
-      "EXPONENT=1.5, ") + kFrictionLaw + "END\n");
+  const model::Model m = build(
+      std::string(
+          "sparse pattern\n"
+          "PART/1, GROUND\n"
+          "PART/3, MASS=5, CM=30, IP=1,1,1, QG=0,0,-0.5\n"
+          "MARKER/30, PART=3\n"
+          "MARKER/31, PART=3, QP=-1,-1,-0.5\n"
+          "GRAPHICS/1, BOX, CORNER=31, X=2, Y=2, Z=1\n"
+          "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0.1,0.2,0.098, VX=1, VY=0.3, VZ=-0.2, "
+          "WX=1, WY=2\n"
+          "MARKER/20, PART=2\n"
+          "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
+          "PART/4, MASS=1, CM=40, IP=1,1,1, QG=5,5,5\n"
+          "MARKER/40, PART=4\n"
+          "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=50, DMAX=1e-3, "
+          "EXPONENT=1.5, ") +
+      kFrictionLaw + "END\n");
   mechanics::MultibodySystem s(m);
   // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
   mechanics::ExpressionRunState run(m);
@@ -251,8 +214,8 @@ TEST(ContactModel, SparsePatternHoldsTheContactEntries) {
   s.newtonMatrix(0.0, y, yp, 30.0, dense);
   s.newtonMatrixSparse(0.0, y, yp, 30.0, pattern, sparse, work);
   const double difference = (Eigen::MatrixXd(sparse) - dense).cwiseAbs().maxCoeff();
-  std::printf("contact sparse pattern: max |sparse - dense| %.3e, largest entry %.3e\n",
-              difference, dense.cwiseAbs().maxCoeff());
+  std::printf("contact sparse pattern: max |sparse - dense| %.3e, largest entry %.3e\n", difference,
+              dense.cwiseAbs().maxCoeff());
   EXPECT_LE(difference, 1e-12 * dense.cwiseAbs().maxCoeff());
   EXPECT_TRUE(s.rowsOutsidePattern(0.0, y, yp, 30.0, sparse, work).empty());
 }

@@ -38,51 +38,6 @@ std::string ballDeck(const std::string& law, double gravity) {
          "END\n";
 }
 
-// The penetration d = R - z obeys d'' = g - F(d, d')/m with ADAMS's IMPACT force.
-struct ImpactOde {
-  double k, e, c, dmax, g;
-  double force(double d, double u) const {
-    if (d <= 0.0) return 0.0;
-    double damp = c;
-    if (d < dmax) {
-      const double s = d / dmax;
-      damp = c * s * s * (3.0 - 2.0 * s);
-    }
-    return std::max(0.0, k * std::pow(d, e) + damp * u);
-  }
-  void rate(const double x[2], double out[2]) const {
-    out[0] = x[1];
-    out[1] = g - force(x[0], x[1]);
-  }
-  void rk4(double x[2], double h) const {
-    double k1[2], k2[2], k3[2], k4[2], t[2];
-    rate(x, k1);
-    for (int i = 0; i < 2; ++i) t[i] = x[i] + 0.5 * h * k1[i];
-    rate(t, k2);
-    for (int i = 0; i < 2; ++i) t[i] = x[i] + 0.5 * h * k2[i];
-    rate(t, k3);
-    for (int i = 0; i < 2; ++i) t[i] = x[i] + h * k3[i];
-    rate(t, k4);
-    for (int i = 0; i < 2; ++i) x[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
-  }
-};
-
-// Peak of samples y(t) at uniform spacing by the parabola through the three largest neighbours.
-double peak(const std::vector<double>& y) {
-  const size_t k = std::max_element(y.begin(), y.end()) - y.begin();
-  if (k == 0 || k + 1 >= y.size()) return y[k];
-  const double a = 0.5 * (y[k + 1] - 2 * y[k] + y[k - 1]), b = 0.5 * (y[k + 1] - y[k - 1]);
-  return y[k] - b * b / (4 * a);
-}
-
-// First time after the peak where y falls back to 0 (linear interpolation between samples).
-double returnTime(const std::vector<double>& t, const std::vector<double>& y) {
-  const size_t top = std::max_element(y.begin(), y.end()) - y.begin();
-  for (size_t k = top + 1; k < y.size(); ++k)
-    if (y[k] <= 0.0) return t[k - 1] + (t[k] - t[k - 1]) * y[k - 1] / (y[k - 1] - y[k]);
-  return -1.0;
-}
-
 TEST(ContactNormalLaw, ImpactBounceMatchesTheIntegratedImpactOde) {
   const ImpactOde ode{1e6, 1.5, 100.0, 1e-3, 9.81};
   const model::Model m =
@@ -150,6 +105,62 @@ TEST(ContactNormalLaw, UndampedImpactBounceKeepsItsEnergy) {
   std::printf("undamped bounce: energy change %.3e of the impact energy\n",
               (after - before) / impactEnergy);
   EXPECT_LT(std::abs(after - before), 1e-6 * impactEnergy);
+}
+
+TEST(ContactNormalLaw, OnsetEventsAreLocatedAndTheLooseBounceStaysAccurate) {
+  // The ball starts 0.01 above the floor moving down at 1 m/s, so the first touch falls inside
+  // a step. Truth: free fall to the touch (closed form), then the IMPACT ODE by RK4 as above.
+  const ImpactOde ode{1e6, 1.5, 100.0, 1e-3, 9.81};
+  std::string deck = ballDeck("IMPACT, STIFFNESS=1e6, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ode.g);
+  deck.replace(deck.find("QG=0,0,0.1"), 10, "QG=0,0,0.11");
+  const model::Model m = build(deck);
+  const double touch = (-1.0 + std::sqrt(1.0 + 2.0 * ode.g * 0.01)) / ode.g;
+  const double dt = 1e-4, end = 0.04;  // touch at 0.00995, release near 0.024
+  std::vector<double> t, truth;
+  double x[2] = {0.0, 1.0 + ode.g * touch};
+  for (int k = 0; k <= 400; ++k) {
+    const double tk = k * dt;
+    t.push_back(tk);
+    if (tk <= touch) {
+      truth.push_back(-(0.01 - tk - 0.5 * ode.g * tk * tk));  // negative: the gap
+      continue;
+    }
+    const double from = std::max(touch, (k - 1) * dt);
+    for (int q = 0; q < 1000; ++q) ode.rk4(x, (tk - from) / 1000);
+    truth.push_back(x[0]);
+  }
+  const double maxTruth = peak(truth);
+  double errors[2];
+  size_t onsets = 0;
+  for (int withEvents = 0; withEvents < 2; ++withEvents) {
+    std::vector<analysis::ContactEvent> events;
+    // ERROR 1e-4 and HMAX 1e-3 (the contact lasts about 4e-3 s): a loose run.
+    const std::vector<Sample> run =
+        simulate(m, end, dt, 1e-4, 1e-3, withEvents ? &events : nullptr);
+    ASSERT_EQ(run.size(), t.size());
+    std::vector<double> depth;
+    for (const Sample& s : run) depth.push_back(kRadius - s.r.z());
+    errors[withEvents] = std::abs(peak(depth) / maxTruth - 1);
+    if (withEvents) {
+      onsets = events.size();
+      ASSERT_GE(events.size(), 2u);
+      EXPECT_TRUE(events[0].onset);
+      EXPECT_EQ(events[0].contactId, 1);
+      EXPECT_FALSE(events[1].onset);
+      // The onset time to the bisection's bracket (1e-10 of a step) plus the integration error.
+      std::printf("contact onset at %.12f (free-fall truth %.12f, diff %.2e), separation at %.9f\n",
+                  events[0].time, touch, events[0].time - touch, events[1].time);
+      EXPECT_NEAR(events[0].time, touch, 1e-6);
+    }
+  }
+  std::printf(
+      "loose bounce (ERROR 1e-4): max penetration rel error %.3e without events, %.3e "
+      "with onset restarts (%zu events)\n",
+      errors[0], errors[1], onsets);
+  // Measured: the restart at onset does not improve the peak at this tolerance (2.47e-4 with,
+  // 2.37e-4 without; docs/theory.md §6c): both stay within the run's ERROR-level accuracy.
+  EXPECT_LT(errors[0], 1e-3);
+  EXPECT_LT(errors[1], 1e-3);
 }
 
 }  // namespace

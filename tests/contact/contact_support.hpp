@@ -4,15 +4,18 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <functional>
 #include <string>
 #include <vector>
 
+#include "analysis/contact_events.hpp"
 #include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
-#include "mechanics/initial_conditions.hpp"
 #include "mechanics/expression_run_state.hpp"
+#include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
@@ -38,9 +41,12 @@ struct Sample {
   Eigen::Vector3d r, v, w;
 };
 
-// Dynamic run (GSTIFF-style BDF, I3) to `end` with outputs every `step`.
+// Dynamic run (GSTIFF-style BDF, I3) to `end` with outputs every `step`. With `events`, the
+// method runs under the contact event locator (analysis/contact_events.hpp), which restarts it
+// at each onset and records the events there.
 inline std::vector<Sample> simulate(const model::Model& m, double end, double step, double error,
-                                    double hmax) {
+                                    double hmax,
+                                    std::vector<analysis::ContactEvent>* events = nullptr) {
   std::vector<Sample> out;
   mechanics::MultibodySystem s(m);
   // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
@@ -57,7 +63,9 @@ inline std::vector<Sample> simulate(const model::Model& m, double end, double st
   settings.error = error;
   settings.hmax = hmax;
   settings.hinit = hmax / 10;
-  solvers::BdfIntegrator bdf(dae, settings);
+  solvers::BdfIntegrator method(dae, settings);
+  analysis::ContactEventIntegrator located(method, s);
+  solvers::Integrator& bdf = events ? static_cast<solvers::Integrator&>(located) : method;
   bdf.start(0.0, y, yp);
   auto record = [&](double t, const Eigen::VectorXd& x) {
     const Quat<double> e{x(StateLayout::kE), x(StateLayout::kE + 1), x(StateLayout::kE + 2),
@@ -75,7 +83,92 @@ inline std::vector<Sample> simulate(const model::Model& m, double end, double st
     }
     record(bdf.t(), bdf.y());
   }
+  if (events) *events = located.events();
   return out;
+}
+
+// The penetration d = R - z obeys d'' = g - F(d, d')/m with ADAMS's IMPACT force.
+struct ImpactOde {
+  double k, e, c, dmax, g;
+  double force(double d, double u) const {
+    if (d <= 0.0) return 0.0;
+    double damp = c;
+    if (d < dmax) {
+      const double s = d / dmax;
+      damp = c * s * s * (3.0 - 2.0 * s);
+    }
+    return std::max(0.0, k * std::pow(d, e) + damp * u);
+  }
+  void rate(const double x[2], double out[2]) const {
+    out[0] = x[1];
+    out[1] = g - force(x[0], x[1]);
+  }
+  void rk4(double x[2], double h) const {
+    double k1[2], k2[2], k3[2], k4[2], t[2];
+    rate(x, k1);
+    for (int i = 0; i < 2; ++i) t[i] = x[i] + 0.5 * h * k1[i];
+    rate(t, k2);
+    for (int i = 0; i < 2; ++i) t[i] = x[i] + 0.5 * h * k2[i];
+    rate(t, k3);
+    for (int i = 0; i < 2; ++i) t[i] = x[i] + h * k3[i];
+    rate(t, k4);
+    for (int i = 0; i < 2; ++i) x[i] += h / 6.0 * (k1[i] + 2 * k2[i] + 2 * k3[i] + k4[i]);
+  }
+};
+
+// Peak of samples y(t) at uniform spacing by the parabola through the three largest neighbours.
+inline double peak(const std::vector<double>& y) {
+  const size_t k = std::max_element(y.begin(), y.end()) - y.begin();
+  if (k == 0 || k + 1 >= y.size()) return y[k];
+  const double a = 0.5 * (y[k + 1] - 2 * y[k] + y[k - 1]), b = 0.5 * (y[k + 1] - y[k - 1]);
+  return y[k] - b * b / (4 * a);
+}
+
+// First time after the peak where y falls back to 0 (linear interpolation between samples).
+inline double returnTime(const std::vector<double>& t, const std::vector<double>& y) {
+  const size_t top = std::max_element(y.begin(), y.end()) - y.begin();
+  for (size_t k = top + 1; k < y.size(); ++k)
+    if (y[k] <= 0.0) return t[k - 1] + (t[k] - t[k - 1]) * y[k - 1] / (y[k - 1] - y[k]);
+  return -1.0;
+}
+
+// dG/dy of the residual: the Newton matrix with cj = 0 against central differences.
+inline void checkJacobian(const std::string& text, const Eigen::VectorXd& velocity) {
+  const model::Model m = build(text);
+  mechanics::MultibodySystem s(m);
+  // A dynamic analysis (DYNAMICS_ONLY friction acts): the mode is the run state's.
+  mechanics::ExpressionRunState run(m);
+  run.status().mode = model::AnalysisMode::Dynamics;
+  s.setRunState(&run);
+  Eigen::VectorXd y = s.initialState();
+  y.segment<3>(StateLayout::kV) = velocity.head<3>();
+  y.segment<3>(StateLayout::kW) = velocity.tail<3>();
+  const Eigen::VectorXd yp = Eigen::VectorXd::Zero(y.size());
+  Eigen::MatrixXd exact;
+  s.newtonMatrix(0.0, y, yp, 0.0, exact);
+  const int n = static_cast<int>(y.size());
+  Eigen::VectorXd gp(n), gm(n);
+  double worst = 0.0, scale = 0.0;
+  int columns = 0;
+  for (int c = 0; c < n; ++c) {
+    const double h = 1e-7;
+    Eigen::VectorXd a = y, b = y;
+    a(c) += h;
+    b(c) -= h;
+    s.residual(0.0, a.data(), yp.data(), gp.data());
+    s.residual(0.0, b.data(), yp.data(), gm.data());
+    const Eigen::VectorXd fd = (gp - gm) / (2 * h);
+    worst = std::max(worst, (fd - exact.col(c)).cwiseAbs().maxCoeff());
+    scale = std::max(scale, exact.col(c).cwiseAbs().maxCoeff());
+    ++columns;
+  }
+  std::printf(
+      "contact Jacobian: max |exact - central difference| %.3e of max entry %.3e over "
+      "%d columns\n",
+      worst, scale, columns);
+  EXPECT_EQ(columns, n);
+  // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches.
+  EXPECT_LT(worst, 1e-6 * scale);
 }
 
 }  // namespace openmss::contact_test

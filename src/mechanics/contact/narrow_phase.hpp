@@ -3,37 +3,16 @@
 // on the scalar: the choices (which face, which vertex) are made on values, the depth, normal
 // and point are computed on T so their partials are exact between switches.
 // Analytic pairs: sphere-sphere, sphere-box (a box floor is the plane), box-box (the vertices
-// of each box inside the other: exact for face-on-face and vertex-on-face contact).
+// of each box inside the other: exact for face-on-face and vertex-on-face contact); the pairs
+// with a frustum (CYLINDER, FRUSTUM) are in frustum_narrow_phase.hpp.
 
 #include <algorithm>
 #include <vector>
 
-#include "common/vec3.hpp"
-#include "model/contact.hpp"
+#include "mechanics/contact/contact_point.hpp"
+#include "mechanics/contact/frustum_narrow_phase.hpp"
 
 namespace openmss::mechanics::contact {
-
-// A solid's reference marker in ground: origin and axes.
-template <class T>
-struct SolidFrame {
-  V3<T> p;
-  M3<T> a;
-};
-
-template <class T>
-struct ContactPoint {
-  V3<T> point;   // where the force acts, midway between the two surfaces
-  V3<T> normal;  // unit, from J's solid towards I's (the normal force pushes I along it)
-  T depth;       // penetration, > 0
-};
-
-// The box's extents along each axis of its corner frame: [lo, hi] (X, Y, Z may be negative).
-inline void boxBounds(const model::ContactSolid& b, double lo[3], double hi[3]) {
-  for (int k = 0; k < 3; ++k) {
-    lo[k] = std::min(0.0, b.size[k]);
-    hi[k] = std::max(0.0, b.size[k]);
-  }
-}
 
 template <class T>
 void sphereSphere(const model::ContactSolid& si, const SolidFrame<T>& fi,
@@ -52,8 +31,8 @@ void sphereSphere(const model::ContactSolid& si, const SolidFrame<T>& fi,
 
 // Sphere s (centre c) against box b: normal from the box towards the sphere.
 template <class T>
-bool sphereBox(const model::ContactSolid& s, const SolidFrame<T>& fs,
-               const model::ContactSolid& b, const SolidFrame<T>& fb, ContactPoint<T>& cp) {
+bool sphereBox(const model::ContactSolid& s, const SolidFrame<T>& fs, const model::ContactSolid& b,
+               const SolidFrame<T>& fb, ContactPoint<T>& cp) {
   double lo[3], hi[3];
   boxBounds(b, lo, hi);
   const double r = s.size[0];
@@ -145,16 +124,25 @@ bool narrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
   } else if (si.shape == S::Box && sj.shape == S::Box) {
     verticesInBox(si, fi, sj, fj, false, out);
     verticesInBox(sj, fj, si, fi, true, out);
+  } else if (si.shape == S::Sphere && sj.shape == S::Frustum) {
+    ContactPoint<T> cp;
+    if (sphereFrustum(si, fi, sj, fj, cp)) out.push_back(cp);
+  } else if (si.shape == S::Frustum && sj.shape == S::Sphere) {
+    ContactPoint<T> cp;
+    if (sphereFrustum(sj, fj, si, fi, cp)) {
+      cp.normal = -cp.normal;
+      out.push_back(cp);
+    }
+  } else if (si.shape == S::Frustum && sj.shape == S::Box) {
+    rimsInBox(si, fi, sj, fj, false, out);
+    verticesInFrustum(sj, fj, si, fi, true, out);
+  } else if (si.shape == S::Box && sj.shape == S::Frustum) {
+    verticesInFrustum(si, fi, sj, fj, false, out);
+    rimsInBox(sj, fj, si, fi, true, out);
   } else {
     return false;
   }
   return true;
-}
-
-// Whether the narrow phase covers the pair (model building asks before any run).
-inline bool supportedPair(model::ContactSolid::Shape a, model::ContactSolid::Shape b) {
-  using S = model::ContactSolid::Shape;
-  return a != S::Cylinder && b != S::Cylinder;
 }
 
 }  // namespace openmss::mechanics::contact

@@ -1,0 +1,113 @@
+#include "analysis/contact_events.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+#include "mechanics/contact/contact_loads.hpp"
+#include "mechanics/initial_conditions.hpp"
+#include "mechanics/user_state_solve.hpp"
+
+namespace openmss::analysis {
+namespace {
+
+// Whether contact c has any contact point in state y (the narrow phase on values).
+bool touches(const mechanics::MultibodySystem& s, const model::Contact& c,
+             const Eigen::VectorXd& y) {
+  return mechanics::contact::contactLoads<double>(s.model(), s.layout(), c, y.data(), false)
+             .points > 0;
+}
+
+// The interpolated state made consistent as at the start of a run (as SENSOR events do,
+// analysis/sensor_monitor.cpp); should a projection fail, the interpolated state is kept.
+void makeConsistent(const mechanics::MultibodySystem& s, double t, Eigen::VectorXd& y,
+                    Eigen::VectorXd& yp) {
+  Eigen::VectorXd yc = y, ypc = yp;
+  if (!mechanics::assemblePositions(s, t, yc, 1e-12, 25).converged) return;
+  mechanics::solveVelocities(s, t, yc);
+  if (!mechanics::solveUserAlgebraic(s, t, yc).converged) return;
+  if (!mechanics::solveAccelerations(s, t, yc, ypc)) return;
+  mechanics::userStateRates(s, t, yc, ypc);
+  y = std::move(yc);
+  yp = std::move(ypc);
+}
+
+}  // namespace
+
+ContactEventIntegrator::ContactEventIntegrator(solvers::Integrator& inner,
+                                               const mechanics::MultibodySystem& system,
+                                               bool restartAtOnset)
+    : inner_(inner), system_(system), restartAtOnset_(restartAtOnset) {}
+
+std::vector<bool> ContactEventIntegrator::touching(const Eigen::VectorXd& y) const {
+  const auto& contacts = system_.model().contacts;
+  std::vector<bool> out(contacts.size());
+  for (size_t k = 0; k < contacts.size(); ++k) out[k] = touches(system_, contacts[k], y);
+  return out;
+}
+
+void ContactEventIntegrator::start(double t0, const Eigen::VectorXd& y0,
+                                   const Eigen::VectorXd& yp0) {
+  inner_.start(t0, y0, yp0);
+  state_ = touching(inner_.y());
+}
+
+bool ContactEventIntegrator::step(double tout) {
+  const double a = inner_.t();
+  if (!inner_.step(tout)) return false;
+  if (!active()) return true;
+  const double b = inner_.t();
+  const std::vector<bool> now = touching(inner_.y());
+  if (now == state_) return true;
+  // Each change located by bisection on the interpolant: lo keeps the old state, hi the new,
+  // until the bracket is 1e-10 of the step (or at rounding); the event time is hi.
+  const auto& contacts = system_.model().contacts;
+  std::vector<ContactEvent> found;
+  Eigen::VectorXd y, yp;
+  const double tol = std::max(1e-10 * (b - a), 4e-16 * std::max(1.0, std::abs(b)));
+  for (size_t k = 0; k < contacts.size(); ++k) {
+    if (now[k] == state_[k]) continue;
+    double lo = a, hi = b;
+    for (int it = 0; it < 200 && hi - lo > tol; ++it) {
+      const double mid = 0.5 * (lo + hi);
+      inner_.interpolate(mid, y, yp);
+      (touches(system_, contacts[k], y) == state_[k] ? lo : hi) = mid;
+    }
+    found.push_back({hi, contacts[k].id, static_cast<bool>(now[k])});
+  }
+  std::stable_sort(found.begin(), found.end(),
+                   [](const ContactEvent& x, const ContactEvent& z) { return x.time < z.time; });
+  double restartAt = b;
+  if (restartAtOnset_)
+    for (const ContactEvent& e : found)
+      if (e.onset) {
+        restartAt = e.time;
+        break;
+      }
+  if (restartAt < b) {
+    // Cut the step back to the first onset: the events after it are found again from there.
+    inner_.interpolate(restartAt, y, yp);
+    makeConsistent(system_, restartAt, y, yp);
+    inner_.start(restartAt, y, yp);
+    std::vector<bool> at = touching(inner_.y());
+    for (size_t k = 0; k < contacts.size(); ++k)
+      for (const ContactEvent& e : found)
+        if (e.contactId == contacts[k].id && e.time <= restartAt) at[k] = e.onset;
+    state_ = at;
+    for (const ContactEvent& e : found)
+      if (e.time <= restartAt) events_.push_back(e);
+    return true;
+  }
+  events_.insert(events_.end(), found.begin(), found.end());
+  state_ = now;
+  return true;
+}
+
+std::string ContactEventIntegrator::describe(const ContactEvent& e) {
+  char buf[128];
+  std::snprintf(buf, sizeof buf, "   CONTACT/%ld %s at time %.10E", e.contactId,
+                e.onset ? "onset (first touch)" : "separation", e.time);
+  return buf;
+}
+
+}  // namespace openmss::analysis

@@ -1,0 +1,61 @@
+#pragma once
+// CONTACT onset and separation as integrator events (docs/theory.md §6c, "Events"). An
+// integrator seen through its contacts: after every accepted step each CONTACT's state (any
+// contact point or none) is compared with the step's start; a change is located by bisection
+// on the method's own interpolant. At an onset the method is restarted from the located
+// (consistent) state, so no step straddles the first touch: the step that found it is cut back
+// to the onset and the impact is resolved from a fresh start at the lowest order. Separations
+// are located and recorded only (the force returns to zero continuously there). Every event is
+// kept for the .msg.
+
+#include <string>
+#include <vector>
+
+#include "mechanics/multibody_system.hpp"
+#include "solvers/integrator.hpp"
+
+namespace openmss::analysis {
+
+struct ContactEvent {
+  double time = 0.0;
+  long contactId = 0;
+  bool onset = true;  // false: separation
+};
+
+class ContactEventIntegrator final : public solvers::Integrator {
+ public:
+  // `restartAtOnset` false only locates and records (tests compare both).
+  ContactEventIntegrator(solvers::Integrator& inner, const mechanics::MultibodySystem& system,
+                         bool restartAtOnset = true);
+
+  bool active() const { return !system_.model().contacts.empty(); }
+  void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
+  bool setNextStepSize(double h) override { return inner_.setNextStepSize(h); }
+  bool step(double tout) override;
+  double t() const override { return inner_.t(); }
+  const Eigen::VectorXd& y() const override { return inner_.y(); }
+  const Eigen::VectorXd& yp() const override { return inner_.yp(); }
+  double previousTime() const override { return inner_.previousTime(); }
+  void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override {
+    inner_.interpolate(s, y, yp);
+  }
+  const solvers::IntegratorStatistics& statistics() const override { return inner_.statistics(); }
+  const solvers::IntegratorFailure& failure() const override { return inner_.failure(); }
+  std::vector<std::string> warnings() const override { return inner_.warnings(); }
+
+  const std::vector<ContactEvent>& events() const { return events_; }
+  // The .msg line of one event.
+  static std::string describe(const ContactEvent& e);
+
+ private:
+  // Which contacts touch (any contact point) in state y.
+  std::vector<bool> touching(const Eigen::VectorXd& y) const;
+
+  solvers::Integrator& inner_;
+  const mechanics::MultibodySystem& system_;
+  bool restartAtOnset_;
+  std::vector<bool> state_;  // at inner_.t()
+  std::vector<ContactEvent> events_;
+};
+
+}  // namespace openmss::analysis
