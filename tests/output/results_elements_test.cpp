@@ -2,7 +2,9 @@
 // docs/output-files.md, "Entities and components") against the values the same run reads back
 // through functions in REQUESTs (NFORCE(), ARYVAL(), VARVAL()) and a FORCE request, all in the
 // same .res (17 digits), and against the NFORCE's own balance: the reaction on J equals minus
-// the sum of the forces on its I markers.
+// the sum of the forces on its I markers. COUPLER, CONTACT and FRICTION (a second and third
+// data set) against closed forms: the coupled pair's torque, a sphere at rest on a floor
+// carrying its weight, a block sliding with dynamic friction.
 
 #include <gtest/gtest.h>
 
@@ -111,6 +113,125 @@ TEST(ResultsElements, NforceGconStateElementsAndPlantsHoldTheirReadBackValues) {
   EXPECT_GT(gcon, 1.0);
   EXPECT_GT(lse, 1e-3);
   std::printf("[ .res element entities vs read-backs: %ld values ]\n", compared);
+  fs::remove_all(dir);
+}
+
+// Closed forms for the entities of COUPLER, CONTACT and FRICTION (docs/output-files.md,
+// "Entities and components": the reaction or force on the I marker's part, ground axes).
+constexpr double kG = 9.81;
+
+// COUPLER/1 ties two vertical revolute joints, q1 + 2 q2 = 0; SFORCE/5 turns part 5 (Izz = 1)
+// with T = 2, part 6 (Izz = 4) follows at -1/2 the angle. Eliminating q2, (I5 + I6/4) q1'' = T,
+// so the coupling's torque on part 5 is I5 q1'' - T = -T (I6/4) / (I5 + I6/4) = -1 exactly.
+// CONTACT/1: a sphere of radius 0.1 released 1e-3 above its rest depth on a box floor (top at
+// z = 0); with ζ ≈ 0.3 at ω ≈ 83 rad/s the bounce decays as e^(-25 t), so at t = 1 s the
+// contact force is m g to far below the 1e-6 asserted (at ERROR=1e-8; the default 1e-3 left
+// a position error of 1.6e-8, 1.1e-5 of the force through the contact stiffness).
+constexpr const char* kCouplerContact =
+    "res coupler contact\nUNITS/ SYSTEM=NONE\n"
+    "PART/1, GROUND\nMARKER/10, PART=1, QP=-1,-1,-1\nMARKER/11, PART=1, QP=3,0,0\n"
+    "MARKER/12, PART=1, QP=5,0,0\n"
+    "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n"
+    "PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0,0,0.098875\nMARKER/20, PART=2\n"
+    "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
+    "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=50, DMAX=1e-3, EXPONENT=1.5\n"
+    "PART/5, MASS=1, CM=50, IP=1,1,1, QG=3,0,0\nMARKER/50, PART=5\n"
+    "PART/6, MASS=1, CM=60, IP=4,4,4, QG=5,0,0\nMARKER/60, PART=6\n"
+    "JOINT/5, REVOLUTE, I=50, J=11\nJOINT/6, REVOLUTE, I=60, J=12\n"
+    "COUPLER/1, JOINTS=5,6, TYPE=R,R, SCALES=2\n"
+    "SFORCE/5, ROTATION, ACTIONONLY, I=50, J=11, FUNCTION=2\n"
+    "ACCGRAV/ KGRAV=-9.81\nINTEGRATOR/ GSTIFF, ERROR=1e-8\n"
+    "REQUEST/1, F2=CONTACT(1,0,2,0)\\F3=CONTACT(1,0,3,0)\\F4=CONTACT(1,0,4,0)\n"
+    "RESULTS/XRF\nEND\n";
+
+// FRICTION/1 on a translational joint sliding along ground z, gravity along -x: the joint
+// carries N = m g = 19.62 and the block slides at v = 3 - 2.4525 t > 1.5 Vs for t <= 0.5, so
+// the friction force on the block is -MU_DYNAMIC N = -4.905 along z (docs/theory.md §13).
+constexpr const char* kFriction =
+    "res friction\nUNITS/ SYSTEM=NONE\n"
+    "PART/1, GROUND\nMARKER/10, PART=1\n"
+    "PART/2, MASS=2, CM=20, IP=1,1,1, VZ=3\nMARKER/20, PART=2\n"
+    "JOINT/1, TRANSLATIONAL, I=20, J=10\n"
+    "FRICTION/1, JOINT=1, MU_STATIC=0.4, MU_DYNAMIC=0.25, "
+    "STICTION_TRANSITION_VELOCITY=0.01, MAX_STICTION_DEFORMATION=1e-4\n"
+    "ACCGRAV/ IGRAV=-9.81\n"
+    "REQUEST/1, F2=FRICTION(1,1)\\F3=FRICTION(1,2)\\F4=FRICTION(1,3)\n"
+    "RESULTS/XRF\nEND\n";
+
+ResultsFileData runAndRead(const fs::path& dir, const std::string& name, const char* text,
+                           const std::string& options) {
+  write(dir / (name + ".adm"), text);
+  const Result r = run("run " + name + ".adm " + options + " --quiet", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  ResultsFileData d;
+  std::string err;
+  EXPECT_TRUE(readResultsFile((dir / (name + ".res")).string(), d, &err)) << err;
+  return d;
+}
+
+std::vector<double> seriesOf(const ResultsFileData& d, const char* entity, const char* comp) {
+  const auto id = d.componentId(entity, comp);
+  EXPECT_TRUE(id.has_value()) << entity << "." << comp;
+  return id ? d.series(*id) : std::vector<double>{};
+}
+
+TEST(ResultsElements, CouplerContactAndFrictionHoldTheirClosedForms) {
+  const fs::path dir = scratch("res-elements-closed");
+  long compared = 0;
+  const auto near = [&](double a, double b, double tol, const std::string& what) {
+    EXPECT_NEAR(a, b, tol) << what;
+    ++compared;
+  };
+  const char* names[6] = {"FX", "FY", "FZ", "TX", "TY", "TZ"};
+  {
+    const ResultsFileData d = runAndRead(dir, "cc", kCouplerContact, "--end 1 --dtout 0.1");
+    const std::size_t steps = seriesOf(d, "time", "TIME").size();
+    ASSERT_EQ(steps, 11u);
+    // The coupling torque is constant (-1 about z), its other components zero. The deck runs
+    // at ERROR=1e-8: the multiplier carries the integrator's error on q'' (the default 1e-3
+    // left 1.8e-8), so 1e-9 on a 1 N m torque.
+    for (int c = 0; c < 6; ++c) {
+      const std::vector<double> v = seriesOf(d, "COUPLER_1", names[c]);
+      ASSERT_EQ(v.size(), steps);
+      for (std::size_t k = 1; k < steps; ++k)
+        near(v[k], c == 5 ? -1.0 : 0.0, 1e-9, std::string("COUPLER_1.") + names[c]);
+    }
+    // The contact force entity equals the CONTACT() read-back (same state, 1e-12) and, at rest,
+    // the weight m g (1e-6 relative: the transient has decayed by e^-25).
+    const char* req[3] = {"U2", "U3", "U4"};
+    for (int c = 0; c < 3; ++c) {
+      const std::vector<double> v = seriesOf(d, "CONTACT_1", names[c]);
+      const std::vector<double> r = seriesOf(d, "REQUEST_1", req[c]);
+      ASSERT_EQ(v.size(), steps);
+      ASSERT_EQ(r.size(), steps);
+      for (std::size_t k = 0; k < steps; ++k)
+        near(v[k], r[k], 1e-12 * kG, std::string("CONTACT_1.") + names[c] + " vs read-back");
+      near(v.back(), c == 2 ? kG : 0.0, 1e-6 * kG, std::string("CONTACT_1.") + names[c]);
+    }
+  }
+  {
+    const ResultsFileData d = runAndRead(dir, "fr", kFriction, "--end 0.5 --dtout 0.05");
+    const std::size_t steps = seriesOf(d, "time", "TIME").size();
+    ASSERT_EQ(steps, 11u);
+    const std::vector<double> fz = seriesOf(d, "FRICTION_1", "FZ");
+    const std::vector<double> along = seriesOf(d, "REQUEST_1", "U4");
+    ASSERT_EQ(fz.size(), steps);
+    ASSERT_EQ(along.size(), steps);
+    // From the first integrator output on (t >= 0.05) the block slides: the force is the
+    // dynamic law to the corrector's accuracy on N (1e-6 relative), and |FRICTION(1,3)| is
+    // the same force in the J axes (parallel to ground).
+    for (std::size_t k = 1; k < steps; ++k) {
+      near(fz[k], -0.25 * 2 * kG, 1e-6 * 2 * kG, "FRICTION_1.FZ");
+      near(std::fabs(along[k]), std::fabs(fz[k]), 1e-12 * 2 * kG, "FRICTION_1.FZ vs read-back");
+    }
+    for (int c : {0, 1, 3, 4, 5})
+      for (double v : seriesOf(d, "FRICTION_1", names[c]))
+        near(v, 0.0, 1e-9, std::string("FRICTION_1.") + names[c]);
+  }
+  // 6 x 10 coupler, 3 x (11 + 1) contact, 2 x 10 + 5 x 11 friction values.
+  EXPECT_EQ(compared, 60 + 36 + 20 + 55);
+  std::printf("[ .res COUPLER, CONTACT, FRICTION entities vs closed forms: %ld values ]\n",
+              compared);
   fs::remove_all(dir);
 }
 
