@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "solvers/bdf_integrator.hpp"
+
 namespace openmss::solvers {
 namespace {
 
@@ -50,6 +52,14 @@ void HhtIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   for (auto* v : {&yNew_, &ypNew_, &yPred_, &ypPred_, &g_, &gOld_, &dy_, &slope_}) v->resize(n);
   rowScale_ = Eigen::VectorXd::Ones(n);
   colScale_ = Eigen::VectorXd::Ones(n);
+  // Large problems with a sparse Newton matrix: KLU, as the BDF family (a dense LU of the
+  // 1,900 unknowns of a 100-link chain took 0.6 s per Jacobian; docs/performance.md, "HHT").
+  sparse_ = problem_.sparse() && n >= BdfIntegrator::kSparseThreshold;
+  if (sparse_) {
+    sparseJac_ = *problem_.pattern();
+    sparseA_ = sparseJac_;
+    klu_.analyze(sparseJac_);
+  }
   haveJacobian_ = jacobianCurrent_ = false;
 }
 
@@ -90,6 +100,18 @@ void HhtIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& d
 // force-balance rows take (1 + alpha) A: their old-step part depends on y' only.
 void HhtIntegrator::formNewtonMatrix(double tNew, double h) {
   const int n = problem_.size();
+  // Balance as the BDF family does, with 1/h in the place of cj.
+  const double s = 1.0 / h;
+  for (int i = 0; i < n; ++i) {
+    rowScale_(i) = std::pow(s, problem_.rowScaleExponent(i));
+    colScale_(i) = std::pow(s, problem_.unknownScaleExponent(i));
+  }
+  hJacobian_ = h;
+  haveJacobian_ = jacobianCurrent_ = true;
+  if (sparse_) {
+    formSparseNewtonMatrix(tNew);
+    return;
+  }
   problem_.newtonMatrix(tNew, yPred_, ypPred_, 0.0, jac_);   // A
   problem_.newtonMatrix(tNew, yPred_, ypPred_, 1.0, jacB_);  // A + B
   ++stats_.jacobianEvaluations;
@@ -98,16 +120,44 @@ void HhtIntegrator::formNewtonMatrix(double tNew, double h) {
   for (int r = 0; r < n; ++r)
     if (role_(r) == roleCode(Role::Velocity)) jac_.row(r) *= 1.0 + alpha;
   for (int c = 0; c < n; ++c) jac_.col(c) += slope_(c) * jacB_.col(c);
-  // Balance as the BDF family does, with 1/h in the place of cj.
-  const double s = 1.0 / h;
-  for (int i = 0; i < n; ++i) {
-    rowScale_(i) = std::pow(s, problem_.rowScaleExponent(i));
-    colScale_(i) = std::pow(s, problem_.unknownScaleExponent(i));
-  }
   jac_ = rowScale_.asDiagonal() * jac_ * colScale_.asDiagonal();
   lu_.compute(jac_);
-  hJacobian_ = h;
-  haveJacobian_ = jacobianCurrent_ = true;
+}
+
+void HhtIntegrator::formSparseNewtonMatrix(double tNew) {
+  // A and A + B on one pattern. The problem may widen its pattern while filling either
+  // (DaeProblem::newtonMatrixSparse); widening only adds entries, so when the two counts
+  // differ the first is filled again on the widened pattern, after which both hold it.
+  problem_.newtonMatrixSparse(tNew, yPred_, ypPred_, 0.0, sparseA_);
+  problem_.newtonMatrixSparse(tNew, yPred_, ypPred_, 1.0, sparseJac_);
+  if (sparseA_.nonZeros() != sparseJac_.nonZeros()) {
+    problem_.newtonMatrixSparse(tNew, yPred_, ypPred_, 0.0, sparseA_);
+    if (sparseA_.nonZeros() != sparseJac_.nonZeros())
+      problem_.newtonMatrixSparse(tNew, yPred_, ypPred_, 1.0, sparseJac_);
+  }
+  ++stats_.jacobianEvaluations;
+  // Entry by entry the dense formula: (1 + alpha) A on the force-balance (velocity) rows, A
+  // elsewhere, plus slope_c B_c, then the row and column balance.
+  const double alpha = settings_.alpha;
+  const double* a = sparseA_.valuePtr();
+  double* j = sparseJac_.valuePtr();
+  for (int c = 0; c < sparseJac_.outerSize(); ++c) {
+    for (int e = sparseJac_.outerIndexPtr()[c]; e < sparseJac_.outerIndexPtr()[c + 1]; ++e) {
+      const int r = sparseJac_.innerIndexPtr()[e];
+      const double aShifted = role_(r) == roleCode(Role::Velocity) ? (1.0 + alpha) * a[e] : a[e];
+      j[e] = rowScale_(r) * (aShifted + slope_(c) * (j[e] - a[e])) * colScale_(c);
+    }
+  }
+  klu_.factor(sparseJac_);
+}
+
+void HhtIntegrator::solveNewton(Eigen::VectorXd& x) {
+  if (sparse_) {
+    klu_.solve(x);  // NaNs when the factorisation failed: the attempt fails
+    return;
+  }
+  const Eigen::VectorXd solved = lu_.solve(x);  // (a temporary, as before: no aliasing)
+  x = solved;
 }
 
 bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm) {
@@ -166,7 +216,8 @@ bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm)
       dy_ = rowScale_.cwiseProduct(g_);
       lastResidual = dy_.cwiseAbs().maxCoeff();
       if (it == 0) firstResidual = lastResidual;
-      dy_ = colScale_.cwiseProduct(lu_.solve(dy_));
+      solveNewton(dy_);
+      dy_ = colScale_.cwiseProduct(dy_);
       yNew_ -= dy_;
       const double size = weightedNorm(dy_, yNew_, false);
       noteWorst(g_, dy_);

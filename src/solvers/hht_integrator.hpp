@@ -13,6 +13,7 @@
 
 #include "solvers/dae_problem.hpp"
 #include "solvers/integrator.hpp"
+#include "solvers/klu_linear_solver.hpp"
 
 namespace openmss::solvers {
 
@@ -53,10 +54,18 @@ class HhtIntegrator final : public Integrator {
   void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
   const IntegratorStatistics& statistics() const override { return stats_; }
   const IntegratorFailure& failure() const override { return failure_; }
+  // "KLU" when the run solves its Newton matrix sparse (problems that offer one, with at least
+  // BdfIntegrator::kSparseThreshold unknowns, as the BDF family), else "dense LU".
+  const char* linearSolverName() const { return sparse_ ? klu_.name() : "dense LU"; }
 
  private:
   bool attemptStep(double h, bool* newtonFailed, double* errorNorm);
   void formNewtonMatrix(double tNew, double h);
+  // The same matrix on the problem's sparse pattern, factorised by KLU (formNewtonMatrix's
+  // sparse branch; docs/theory.md, "Sparse Newton matrix").
+  void formSparseNewtonMatrix(double tNew);
+  // Overwrites x with the solution of the last factorised (scaled) Newton matrix.
+  void solveNewton(Eigen::VectorXd& x);
   double weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& ref, bool errorOnly) const;
   void noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy);
 
@@ -72,6 +81,11 @@ class HhtIntegrator final : public Integrator {
 
   Eigen::MatrixXd jac_, jacB_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
+  // Sparse: A = dG/dy (sparseA_) and A + B (sparseJac_, then the Newton matrix itself), on
+  // the problem's pattern, factorised by klu_ with its pivots reused while they serve.
+  bool sparse_ = false;
+  Eigen::SparseMatrix<double> sparseA_, sparseJac_;
+  KluLinearSolver klu_;
   Eigen::VectorXd rowScale_, colScale_, slope_;
   double hJacobian_ = 0.0;
   bool haveJacobian_ = false, jacobianCurrent_ = false;
