@@ -16,8 +16,8 @@ using Vec3 = std::array<double, 3>;
 // One rigid link of a benchmark model: a slender cylinder (or, for the bushing chain, a compact
 // block) with its principal inertias along `axialDirection` and two directions across it.
 struct RigidBody {
-  Vec3 proximal{};        // joint point to the parent (pendulum chains, four-bar rockers)
-  Vec3 distal{};          // far end (the tip of the last link)
+  Vec3 proximal{};  // joint point to the parent (pendulum chains, four-bar rockers)
+  Vec3 distal{};    // far end (the tip of the last link)
   Vec3 centerOfMass{};
   Vec3 axialDirection{};  // unit vector from proximal to distal
   double mass = 0.0;
@@ -58,10 +58,18 @@ struct ElasticParameters {
   double springDamping = 20.0;             // N s/m
 };
 
+// A rotational spring-damper across every revolute joint of a stiff chain (torque
+// -stiffness angle - damping rate about the joint axis, zero at the initial configuration).
+struct JointSpring {
+  double stiffness = 0.0;  // N m/rad
+  double damping = 0.0;    // N m s/rad
+};
+
 struct ChainModel {
   std::string title;
   std::vector<RigidBody> bodies;
   std::vector<RevoluteJoint> joints;
+  JointSpring jointSpring;  // on every joint when its stiffness is positive
   std::vector<ElasticConnection> connections;
   ElasticParameters elastic;
   Vec3 gravity{0.0, -9.80665, 0.0};
@@ -84,6 +92,14 @@ ChainModel planarPendulumChain(int links, const PendulumChainOptions& options = 
 // Spatial chain: joint axes alternate between ground z and ground x and the chain is tilted
 // towards x and z, so every link moves out of any one plane.
 ChainModel spatialPendulumChain(int links, const PendulumChainOptions& options = {});
+// Stiff planar chain: the planar chain with a rotational spring-damper on every joint whose
+// stiffness over the link's moment of inertia about its joint is `stiffnessRatio` (1/s^2;
+// 1e4 and 1e8 for the kinds "chain-stiff4" and "chain-stiff8") and whose damping ratio of that
+// single-link oscillator is 0.05. The springs hold the chain nearly straight: the motion is
+// the tilted chain swinging almost as one pendulum, with fast joint modes up to
+// 2 sqrt(stiffnessRatio) rad/s that an explicit method must resolve for stability and an
+// implicit one may step over.
+ChainModel stiffPendulumChain(int links, double stiffnessRatio);
 // IFToMM multibody benchmark A02 "N four-bar mechanism": N square windows of unit rods
 // (N+1 rockers pinned to ground at x = 0..N, N couplers across their tops), 1 kg each,
 // gravity -y, started from the square configuration with point B0 (top of the first rocker)
@@ -116,7 +132,8 @@ std::string chainAcf(const std::string& datasetFile, const std::string& outputNa
                      double endTime = 10.0, int steps = 100, double error = 1.0e-6,
                      const std::string& integrator = "GSTIFF");
 
-// Model kinds known by name ("chain-planar", "chain-spatial", "fourbar", "bushing").
+// Model kinds known by name ("chain-planar", "chain-spatial", "chain-stiff4", "chain-stiff8",
+// "fourbar", "bushing").
 ChainModel modelByName(const std::string& kind, int size);
 std::vector<std::string> modelNames();
 

@@ -1,22 +1,24 @@
 // The benchmark pendulum chains in MuJoCo (Debian libmujoco-dev 2.2.2), for scripts/bench.sh.
 //
-//   mujoco_chain KIND N END DT
+//   mujoco_chain KIND N END DT [INTEGRATOR]
 //
-// KIND: chain-planar | chain-spatial. Builds the chain of bench/model_generators.cpp as MJCF
-// (nested bodies with hinge joints, the same inertias, gravity and initial state), integrates
-// with RK4 at a fixed step DT to END, and prints key=value lines: wall times, steps, the tip's
-// final position and velocity, and peak resident memory. Contacts are disabled (no geoms).
-// The four-bar row and the bushing chain are not built here: MuJoCo closes loops only through
-// soft equality constraints, and it has no bushing element, so their results would not be the
-// same model.
+// KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 (the stiff chains' joint
+// springs as hinge stiffness and damping). INTEGRATOR: RK4 (default), Euler (semi-implicit,
+// joint damping implicit) or implicit (implicit in velocity). Builds the chain of
+// bench/model_generators.cpp as MJCF (nested bodies with hinge joints, the same inertias, gravity
+// and initial state), integrates with RK4 at a fixed step DT to END, and prints key=value lines:
+// wall times, steps, the tip's final position and velocity, and peak resident memory. Contacts are
+// disabled (no geoms). The four-bar row and the bushing chain are not built here: MuJoCo closes
+// loops only through soft equality constraints, and it has no bushing element, so their results
+// would not be the same model.
 
 #include <mujoco/mujoco.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
-#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -53,9 +55,10 @@ std::string bodies(const ChainModel& m, int first, int last, const std::string& 
     const auto& b = m.bodies[i];
     const Vec3 parentOrigin = i == 0 ? Vec3{0, 0, 0} : m.bodies[i - 1].proximal;
     const auto inertia = openmss::bench::inertiaTensorInGround(b);
-    x << "<body name=\"link" << i << "\" pos=\"" << vec(minus(b.proximal, parentOrigin))
-      << "\">\n"
-      << "<joint type=\"hinge\" pos=\"0 0 0\" axis=\"" << vec(m.joints[i].axis) << "\"/>\n"
+    x << "<body name=\"link" << i << "\" pos=\"" << vec(minus(b.proximal, parentOrigin)) << "\">\n"
+      << "<joint type=\"hinge\" pos=\"0 0 0\" axis=\"" << vec(m.joints[i].axis) << "\""
+      << " stiffness=\"" << m.jointSpring.stiffness << "\" damping=\"" << m.jointSpring.damping
+      << "\"/>\n"
       << "<inertial pos=\"" << vec(minus(b.centerOfMass, b.proximal)) << "\" mass=\"" << b.mass
       << "\" fullinertia=\"" << inertia[0] << ' ' << inertia[4] << ' ' << inertia[8] << ' '
       << inertia[1] << ' ' << inertia[2] << ' ' << inertia[5] << "\"/>\n";
@@ -69,7 +72,7 @@ std::string bodies(const ChainModel& m, int first, int last, const std::string& 
 }
 
 // Writes the model files into `dir`; returns the main file.
-std::string writeMjcf(const ChainModel& m, const std::string& dir) {
+std::string writeMjcf(const ChainModel& m, const std::string& dir, const std::string& integrator) {
   const int n = static_cast<int>(m.bodies.size());
   const int files = (n + kLinksPerFile - 1) / kLinksPerFile;
   auto name = [](int k) { return "part" + std::to_string(k) + ".xml"; };
@@ -83,7 +86,7 @@ std::string writeMjcf(const ChainModel& m, const std::string& dir) {
   x.precision(17);
   x << "<mujoco model=\"chain\">\n"
     << "  <compiler angle=\"radian\" inertiafromgeom=\"false\"/>\n"
-    << "  <option gravity=\"" << vec(m.gravity) << "\" integrator=\"RK4\">\n"
+    << "  <option gravity=\"" << vec(m.gravity) << "\" integrator=\"" << integrator << "\">\n"
     << "    <flag contact=\"disable\"/>\n  </option>\n  <worldbody>\n"
     << bodies(m, 0, std::min(n, kLinksPerFile), files > 1 ? name(1) : "")
     << "  </worldbody>\n</mujoco>\n";
@@ -99,12 +102,16 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 }  // namespace
 
 int main(int argc, char** argv) {
-  if (argc != 5) {
-    std::cerr << "usage: mujoco_chain chain-planar|chain-spatial N END DT\n";
+  if (argc != 5 && argc != 6) {
+    std::cerr
+        << "usage: mujoco_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8 N END DT "
+           "[RK4|Euler|implicit]\n";
     return 64;
   }
   const std::string kind = argv[1];
-  if (kind != "chain-planar" && kind != "chain-spatial") {
+  const std::string integrator = argc == 6 ? argv[5] : "RK4";
+  if (kind != "chain-planar" && kind != "chain-spatial" && kind != "chain-stiff4" &&
+      kind != "chain-stiff8") {
     std::cerr << "mujoco_chain: " << kind << " is not built for MuJoCo (see the file header)\n";
     return 3;
   }
@@ -116,7 +123,7 @@ int main(int argc, char** argv) {
   const std::filesystem::path dir =
       std::filesystem::temp_directory_path() / ("openmss-mujoco-" + std::to_string(getpid()));
   std::filesystem::create_directories(dir);
-  const std::string path = writeMjcf(model, dir.string());
+  const std::string path = writeMjcf(model, dir.string(), integrator);
   char error[1000] = "";
   mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
   std::filesystem::remove_all(dir);
@@ -137,8 +144,8 @@ int main(int argc, char** argv) {
   mj_objectVelocity(m, d, mjOBJ_SITE, tip, velocity, 0);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::printf("engine=mujoco\nsetting=RK4 dt=%g\nbuild_s=%.6f\nintegrate_s=%.6f\nsteps=%ld\n", dt,
-              seconds(t0, t1), seconds(t1, t2), steps);
+  std::printf("engine=mujoco\nsetting=%s dt=%g\nbuild_s=%.6f\nintegrate_s=%.6f\nsteps=%ld\n",
+              integrator.c_str(), dt, seconds(t0, t1), seconds(t1, t2), steps);
   std::printf("time=%.17g\n", d->time);
   std::printf("tip=%.17g %.17g %.17g %.17g %.17g %.17g\n", d->site_xpos[3 * tip],
               d->site_xpos[3 * tip + 1], d->site_xpos[3 * tip + 2], velocity[3], velocity[4],

@@ -1,19 +1,22 @@
 // The benchmark pendulum chains in Simbody (Debian libsimbody-dev 3.7), for scripts/bench.sh.
 //
-//   simbody_chain KIND N END ACCURACY
+//   simbody_chain KIND N END ACCURACY [INTEGRATOR]
 //
-// KIND: chain-planar | chain-spatial. Builds the chain of bench/model_generators.cpp as a tree
-// of Pin mobilizers (the same inertias, gravity and initial state), integrates with
-// RungeKuttaMersonIntegrator at the given accuracy to END, and prints key=value lines: wall
-// times, steps, the tip's final position and velocity, and peak resident memory.
-// The four-bar row and the bushing chain are not built here (not yet).
-
-#include <sys/resource.h>
+// KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 (the stiff chains' joint
+// springs as MobilityLinearSpring and MobilityLinearDamper). INTEGRATOR: RKMerson (default)
+// or CPodes (Simbody's implicit BDF for stiff systems). Builds the chain of
+// bench/model_generators.cpp as a tree of Pin mobilizers (the same inertias, gravity and initial
+// state), integrates with RungeKuttaMersonIntegrator at the given accuracy to END, and prints
+// key=value lines: wall times, steps, the tip's final position and velocity, and peak resident
+// memory. The four-bar row and the bushing chain are not built here (not yet).
 
 #include <Simbody.h>
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
+#include <memory>
 #include <string>
 
 #include "../model_generators.hpp"
@@ -32,12 +35,19 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 
 int main(int argc, char** argv) {
   using namespace SimTK;
-  if (argc != 5) {
-    std::cerr << "usage: simbody_chain chain-planar|chain-spatial N END ACCURACY\n";
+  if (argc != 5 && argc != 6) {
+    std::cerr << "usage: simbody_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8 N END "
+                 "ACCURACY [RKMerson|CPodes]\n";
     return 64;
   }
   const std::string kind = argv[1];
-  if (kind != "chain-planar" && kind != "chain-spatial") {
+  const std::string method = argc == 6 ? argv[5] : "RKMerson";
+  if (method != "RKMerson" && method != "CPodes") {
+    std::cerr << "simbody_chain: unknown integrator " << method << " (RKMerson, CPodes)\n";
+    return 64;
+  }
+  if (kind != "chain-planar" && kind != "chain-spatial" && kind != "chain-stiff4" &&
+      kind != "chain-stiff8") {
     std::cerr << "simbody_chain: " << kind << " is not built for Simbody (see the file header)\n";
     return 3;
   }
@@ -68,6 +78,11 @@ int main(int argc, char** argv) {
     const Vec3 origin = toSimTK(b.proximal);
     MobilizedBody::Pin pin(parent, Transform(zOntoAxis, origin - parentOrigin), body,
                            Transform(zOntoAxis, Vec3(0)));
+    if (model.jointSpring.stiffness > 0.0) {
+      Force::MobilityLinearSpring(forces, pin, MobilizerQIndex(0), model.jointSpring.stiffness,
+                                  0.0);
+      Force::MobilityLinearDamper(forces, pin, MobilizerUIndex(0), model.jointSpring.damping);
+    }
     parent = pin;
     parentOrigin = origin;
     last = pin;
@@ -77,7 +92,12 @@ int main(int argc, char** argv) {
 
   system.realizeTopology();
   State state = system.getDefaultState();
-  RungeKuttaMersonIntegrator integrator(system);
+  std::unique_ptr<Integrator> owned;
+  if (method == "CPodes")
+    owned = std::make_unique<CPodesIntegrator>(system, CPodes::BDF, CPodes::Newton);
+  else
+    owned = std::make_unique<RungeKuttaMersonIntegrator>(system);
+  Integrator& integrator = *owned;
   integrator.setAccuracy(accuracy);
   TimeStepper stepper(system, integrator);
   stepper.initialize(state);
@@ -90,8 +110,8 @@ int main(int argc, char** argv) {
   const Vec3 v = last.findStationVelocityInGround(final, tipStation);
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
-  std::printf("engine=simbody\nsetting=RK-Merson accuracy=%g\nbuild_s=%.6f\nintegrate_s=%.6f\n",
-              accuracy, seconds(t0, t1), seconds(t1, t2));
+  std::printf("engine=simbody\nsetting=%s accuracy=%g\nbuild_s=%.6f\nintegrate_s=%.6f\n",
+              method.c_str(), accuracy, seconds(t0, t1), seconds(t1, t2));
   std::printf("steps=%d\ntime=%.17g\n", integrator.getNumStepsTaken(), final.getTime());
   std::printf("tip=%.17g %.17g %.17g %.17g %.17g %.17g\n", p[0], p[1], p[2], v[0], v[1], v[2]);
   std::printf("rss_mb=%.1f\n", static_cast<double>(usage.ru_maxrss) / 1024.0);
