@@ -11,13 +11,13 @@
 namespace {
 
 int usage() {
-  std::cerr
-      << "Usage:\n"
-         "  openmss-generate KIND N               ADAMS data set on standard output\n"
-         "  openmss-generate acf DATASET OUTPUT END STEPS ERROR [INTEGRATOR]\n"
-         "                                        command file on standard output\n"
-         "KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 | fourbar | bushing;\n"
-         "N: links (loops for fourbar)\n";
+  std::cerr << "Usage:\n"
+               "  openmss-generate KIND N               ADAMS data set on standard output\n"
+               "  openmss-generate acf DATASET OUTPUT END STEPS ERROR [INTEGRATOR]\n"
+               "                                        command file on standard output\n"
+               "KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 | fourbar |\n"
+               "bushing; "
+               "N: links (loops for fourbar)\n";
   return 64;
 }
 

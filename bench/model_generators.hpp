@@ -16,8 +16,8 @@ using Vec3 = std::array<double, 3>;
 // One rigid link of a benchmark model: a slender cylinder (or, for the bushing chain, a compact
 // block) with its principal inertias along `axialDirection` and two directions across it.
 struct RigidBody {
-  Vec3 proximal{};  // joint point to the parent (pendulum chains, four-bar rockers)
-  Vec3 distal{};    // far end (the tip of the last link)
+  Vec3 proximal{};        // joint point to the parent (pendulum chains, four-bar rockers)
+  Vec3 distal{};          // far end (the tip of the last link)
   Vec3 centerOfMass{};
   Vec3 axialDirection{};  // unit vector from proximal to distal
   double mass = 0.0;

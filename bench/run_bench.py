@@ -24,8 +24,12 @@ import time
 # the tip state after the issue's 10 s is a meaningful accuracy measure; the four-bar row
 # reaches its singular (flat) configuration near t = 1 s, so it stops at 0.5 s; the bushing
 # chain is stiff (ω up to ~300 rad/s) and 1 s covers many periods.
-END_TIME = {"chain-planar": 10.0, "chain-spatial": 10.0, "fourbar": 0.5, "bushing": 1.0}
-PEER_MODELS = {"chain-planar", "chain-spatial"}  # what bench/peers/ builds
+# The stiff chains run 1 s: an explicit peer's step is held near 1e-5 s by their joint modes.
+END_TIME = {"chain-planar": 10.0, "chain-spatial": 10.0, "chain-stiff4": 1.0, "chain-stiff8": 1.0,
+            "fourbar": 0.5, "bushing": 1.0}
+# What bench/peers/ builds.
+PEER_MODELS = {"chain-planar", "chain-spatial", "chain-stiff4", "chain-stiff8"}
+STIFF_MODELS = {"chain-stiff4", "chain-stiff8", "bushing"}
 
 # (INTEGRATOR, ERROR) settings. GSTIFF, the default, not at 1e-4: on the chains' undamped
 # high-frequency modes orders 3-6 are only weakly stable; the stability-limit detection
@@ -34,16 +38,26 @@ PEER_MODELS = {"chain-planar", "chain-spatial"}  # what bench/peers/ builds
 # MERSON, the explicit method for non-stiff models (docs/integrators.md, "MERSON"), on the
 # models it is meant for; not on the stiff bushing chain, where its steps are held by stability
 # (it warns and names GSTIFF).
-OPENMSS_LADDER = [("GSTIFF", 1e-5), ("GSTIFF", 1e-6), ("MERSON", 1e-4), ("MERSON", 1e-5),
-                  ("MERSON", 1e-6)]
-OPENMSS_SKIP = {("MERSON", "bushing")}
-SIMBODY_LADDER = [1e-4, 1e-5, 1e-6]  # RungeKuttaMersonIntegrator accuracy (1e-6: the issue's figure)
-MUJOCO_LADDER = [1e-2, 1e-3]  # RK4 time step (1e-3: the issue's figure)
+# WSTIFF and HHT, the other integrators of real data sets (issue 21), at ERROR = 1e-6.
+OPENMSS_LADDER = [("GSTIFF", 1e-5), ("GSTIFF", 1e-6), ("WSTIFF", 1e-6), ("HHT", 1e-6),
+                  ("MERSON", 1e-4), ("MERSON", 1e-5), ("MERSON", 1e-6)]
+OPENMSS_SKIP = {("MERSON", m) for m in STIFF_MODELS}
+# Simbody (integrator, accuracy): RungeKuttaMersonIntegrator (1e-6: the issue's figure); on the
+# stiff chains also CPodesIntegrator, Simbody's implicit BDF.
+SIMBODY_LADDER = [("RKMerson", 1e-4), ("RKMerson", 1e-5), ("RKMerson", 1e-6)]
+SIMBODY_STIFF_LADDER = SIMBODY_LADDER + [("CPodes", 1e-4), ("CPodes", 1e-5), ("CPodes", 1e-6)]
+# MuJoCo (integrator, time step): RK4 (1e-3: the issue's figure). The stiff chains' joint modes
+# (up to about 2 sqrt(k/I) / sqrt(1/4) rad/s) hold an explicit step below ~2.8 / omega: RK4 at
+# 1e-5 diverges on chain-stiff8 at 1e-4; MuJoCo's "implicit" treats the damping implicitly only.
+MUJOCO_LADDER = [("RK4", 1e-2), ("RK4", 1e-3)]
+MUJOCO_STIFF_LADDER = {"chain-stiff4": [("RK4", 1e-3), ("RK4", 1e-4), ("implicit", 1e-4)],
+                       "chain-stiff8": [("RK4", 2e-5), ("RK4", 1e-5), ("implicit", 1e-5)]}
 # OpenMSS's own tight run: the accuracy reference where Simbody has no model, and a cross-check
 # of Simbody's where it has. MERSON at 1e-8 (its error falls about as fast as ERROR: 6e-12 m
 # at the tip of the planar 100-chain at 1e-9) also runs the 1000-link chains, where GSTIFF at
 # 1e-8 meets round-off in its corrector; GSTIFF at 1e-8 on the stiff bushing chain.
-OPENMSS_REFERENCE = {"bushing": ("GSTIFF", 1e-8)}
+OPENMSS_REFERENCE = {"bushing": ("GSTIFF", 1e-8), "chain-stiff4": ("GSTIFF", 1e-9),
+                     "chain-stiff8": ("GSTIFF", 1e-9)}
 OPENMSS_REFERENCE_DEFAULT = ("MERSON", 1e-8)
 SIMBODY_REFERENCE = 1e-10
 # The tight reference runs take several times a measured run (Simbody at 1e-10 on the planar
@@ -52,7 +66,9 @@ REFERENCE_TIMEOUT_FACTOR = 3
 
 
 def run_process(cmd, cwd, timeout):
-    """Runs cmd; returns (status, stdout, wall seconds, peak RSS MB) or status 'timeout'."""
+    """Runs cmd; returns (status, stdout, wall seconds, peak RSS MB, CPU seconds) or status
+    'timeout'. CPU seconds: the child's user + system time (wait4), which a machine shared with
+    other work inflates far less than the wall time."""
     start = time.perf_counter()
     out_file = tempfile.TemporaryFile(mode="w+")
     proc = subprocess.Popen(cmd, cwd=cwd, stdout=out_file, stderr=subprocess.STDOUT,
@@ -74,12 +90,13 @@ def run_process(cmd, cwd, timeout):
         if time.perf_counter() - start > timeout:
             os.killpg(proc.pid, signal.SIGKILL)
             os.wait4(proc.pid, 0)
-            return "timeout", "", time.perf_counter() - start, 0.0
+            return "timeout", "", time.perf_counter() - start, 0.0, 0.0
         time.sleep(0.005)
     wall = time.perf_counter() - start
     proc.returncode = os.waitstatus_to_exitcode(status)
     out_file.seek(0)
-    return proc.returncode, out_file.read(), wall, hwm_kb / 1024.0
+    cpu = usage.ru_utime + usage.ru_stime
+    return proc.returncode, out_file.read(), wall, hwm_kb / 1024.0, cpu
 
 
 def decode_req_tip(req_path):
@@ -107,10 +124,10 @@ def run_openmss(args, kind, n, error, workdir, timeout, integrator="GSTIFF"):
     with open(acf, "w") as f:
         subprocess.run([args.generate, "acf", os.path.basename(adm), name, str(END_TIME[kind]),
                         "10", f"{error:g}", integrator], stdout=f, check=True)
-    status, out, wall, rss = run_process([args.openmss, "run", os.path.basename(acf)], workdir,
-                                         timeout)
+    status, out, wall, rss, cpu = run_process([args.openmss, "run", os.path.basename(acf)],
+                                              workdir, timeout)
     result = {"engine": "OpenMSS", "setting": f"{integrator} ERROR={error:g}", "wall": wall,
-              "rss": rss, "status": status}
+              "cpu": cpu, "rss": rss, "status": status}
     if status == "timeout":
         return result
     m = re.search(r"reached t = (\S+) with (\d+) integration steps", out)
@@ -123,13 +140,15 @@ def run_openmss(args, kind, n, error, workdir, timeout, integrator="GSTIFF"):
     return result
 
 
-def run_peer(program, engine, kind, n, setting, timeout, label):
+def run_peer(program, engine, kind, n, setting, timeout, label, method):
     # In a scratch folder of its own: MuJoCo writes MUJOCO_LOG.TXT into its working directory
     # (it used to land at the repository root).
     with tempfile.TemporaryDirectory(prefix="openmss-bench-peer-") as cwd:
-        status, out, wall, rss = run_process([os.path.abspath(program), kind, str(n),
-                                              str(END_TIME[kind]), f"{setting:g}"], cwd, timeout)
-    result = {"engine": engine, "setting": label, "wall": wall, "rss": rss, "status": status}
+        status, out, wall, rss, cpu = run_process([os.path.abspath(program), kind, str(n),
+                                                   str(END_TIME[kind]), f"{setting:g}", method],
+                                                  cwd, timeout)
+    result = {"engine": engine, "setting": label, "wall": wall, "cpu": cpu, "rss": rss,
+              "status": status}
     if status != 0:
         if status != "timeout":
             result["status"] = "failed"
@@ -211,7 +230,7 @@ def main():
                                  lambda: run_peer(args.simbody, "Simbody", kind, n,
                                                   SIMBODY_REFERENCE, REFERENCE_TIMEOUT_FACTOR *
                                                   args.peer_timeout,
-                                                  f"RK-Merson {SIMBODY_REFERENCE:g}"),
+                                                  f"RK-Merson {SIMBODY_REFERENCE:g}", "RKMerson"),
                                  REFERENCE_TIMEOUT_FACTOR * args.peer_timeout, True)
             # The reference for the accuracy column: Simbody's tight run where it exists (it
             # agrees with MuJoCo at small steps to ~1e-9 m), else OpenMSS's tight run.
@@ -224,24 +243,28 @@ def main():
                                "used": ref["engine"] if ref else "none"})
             # Measurements, alternating engines setting by setting.
             plans = []
-            for i in range(max(len(OPENMSS_LADDER), len(SIMBODY_LADDER), len(MUJOCO_LADDER))):
+            simbody_ladder = SIMBODY_STIFF_LADDER if kind in STIFF_MODELS else SIMBODY_LADDER
+            mujoco_ladder = MUJOCO_STIFF_LADDER.get(kind, MUJOCO_LADDER)
+            for i in range(max(len(OPENMSS_LADDER), len(simbody_ladder), len(mujoco_ladder))):
                 if i < len(OPENMSS_LADDER) and (OPENMSS_LADDER[i][0], kind) not in OPENMSS_SKIP:
                     g, e = OPENMSS_LADDER[i]
                     plans.append(("OpenMSS", f"{g} ERROR={e:g}", False,
                                   lambda g=g, e=e: run_openmss(args, kind, n, e, workdir,
                                                                args.timeout, g), args.timeout))
-                if peers and args.simbody and i < len(SIMBODY_LADDER):
-                    a = SIMBODY_LADDER[i]
-                    plans.append(("Simbody", f"RK-Merson {a:g}", True,
-                                  lambda a=a: run_peer(args.simbody, "Simbody", kind, n, a,
-                                                       args.peer_timeout, f"RK-Merson {a:g}"),
-                                  args.peer_timeout))
-                if peers and args.mujoco and i < len(MUJOCO_LADDER):
-                    h = MUJOCO_LADDER[i]
-                    plans.append(("MuJoCo", f"RK4 dt={h:g}", True,
-                                  lambda h=h: run_peer(args.mujoco, "MuJoCo", kind, n, h,
-                                                       args.peer_timeout, f"RK4 dt={h:g}"),
-                                  args.peer_timeout))
+                if peers and args.simbody and i < len(simbody_ladder):
+                    m, a = simbody_ladder[i]
+                    label = f"{'RK-Merson' if m == 'RKMerson' else m} {a:g}"
+                    plans.append(("Simbody", label, True,
+                                  lambda a=a, m=m, label=label: run_peer(
+                                      args.simbody, "Simbody", kind, n, a, args.peer_timeout,
+                                      label, m), args.peer_timeout))
+                if peers and args.mujoco and i < len(mujoco_ladder):
+                    m, h = mujoco_ladder[i]
+                    label = f"{m} dt={h:g}"
+                    plans.append(("MuJoCo", label, True,
+                                  lambda h=h, m=m, label=label: run_peer(
+                                      args.mujoco, "MuJoCo", kind, n, h, args.peer_timeout,
+                                      label, m), args.peer_timeout))
             for engine, label, peer, fn, timeout in plans:
                 r = guarded(engine, label, n, fn, timeout, peer)
                 r.update({"model": kind, "n": n})
@@ -249,6 +272,7 @@ def main():
                     r["error"] = distance(r["tip"], ref["tip"])
                 rows.append(r)
                 print("   ", engine, label, r.get("status"), fmt_time(r.get("wall", 0)), "s",
+                      "cpu", fmt_time(r.get("cpu", 0)), "s",
                       r.get("steps", ""), f"err {r['error']:.2e}" if "error" in r else
                       r.get("note", ""), flush=True)
             render(args, rows, references, sizes, final=False)
@@ -266,29 +290,31 @@ def render(args, rows, references, sizes, final):
         if not peer_rows:
             continue
         matched = [q for q in peer_rows if q["error"] <= r["error"]]
+        # On CPU time (user + system of each process): the machine is shared, and the peers
+        # run on one thread (set OPENMSS_THREADS=1 for a like-for-like figure).
         if matched:
-            best = min(matched, key=lambda q: q["wall"])
-            r["ratio"] = f"{r['wall'] / best['wall']:.2f}"
+            best = min(matched, key=lambda q: q["cpu"])
+            r["ratio"] = f"{r['cpu'] / best['cpu']:.2f}"
         else:
             best = min(peer_rows, key=lambda q: q["error"])
-            r["ratio"] = f"{r['wall'] / best['wall']:.2f}*"
+            r["ratio"] = f"{r['cpu'] / best['cpu']:.2f}*"
         r["ratio_vs"] = f"{best['engine']} {best['setting']}"
 
-    header = ("| model | N | engine | setting | wall s | steps | ms/step | tip error m | "
-              "peak RSS MB | ours / best peer |")
-    lines = [header, "|" + "---|" * 10]
+    header = ("| model | N | engine | setting | wall s | CPU s | steps | CPU ms/step | "
+              "tip error m | peak RSS MB | ours / best peer (CPU) |")
+    lines = [header, "|" + "---|" * 11]
     for r in rows:
         if "steps" in r:
-            per = 1000.0 * r["wall"] / max(r["steps"], 1)
+            per = 1000.0 * r["cpu"] / max(r["steps"], 1)
             lines.append(
                 f"| {r['model']} | {r['n']} | {r['engine']} | {r['setting']} | "
-                f"{fmt_time(r['wall'])} | {r['steps']} | {per:.3g} | "
+                f"{fmt_time(r['wall'])} | {fmt_time(r['cpu'])} | {r['steps']} | {per:.3g} | "
                 + (f"{r['error']:.1e}" if "error" in r else "no reference") +
                 f" | {r['rss']:.0f} | "
                 f"{r.get('ratio', '') + (' vs ' + r['ratio_vs'] if 'ratio' in r else '')} |")
         else:
             lines.append(f"| {r['model']} | {r['n']} | {r['engine']} | {r['setting']} | "
-                         f"{r.get('note', r['status'])} | | | | | |")
+                         f"{r.get('note', r['status'])} | | | | | | |")
     ref_lines = ["| model | N | OpenMSS tight run vs Simbody 1e-10 (tip, m) | reference used |",
                  "|---|---|---|---|"]
     for rf in references:
@@ -322,7 +348,7 @@ def render(args, rows, references, sizes, final):
               "|---|---|---|---|---|"]
     for kind in dict.fromkeys(r["model"] for r in rows):
         for setting in dict.fromkeys(r["setting"] for r in rows if r["engine"] == "OpenMSS"):
-            pts = sorted((r["n"], r["wall"] / max(r["steps"], 1)) for r in rows
+            pts = sorted((r["n"], r["cpu"] / max(r["steps"], 1)) for r in rows
                          if r["model"] == kind and r["setting"] == setting
                          and r["engine"] == "OpenMSS" and "steps" in r and r["n"] >= 100)
             if len(pts) >= 2 and pts[-1][0] > pts[0][0]:
@@ -345,18 +371,64 @@ def render(args, rows, references, sizes, final):
         write_plot(args.plot, rows)
 
 
+BEGIN_MARK = ("<!-- BEGIN generated by scripts/bench.sh (bench/run_bench.py): the text up to the "
+              "END mark is rewritten by every run; write by hand outside it. -->")
+END_MARK = "<!-- END generated by scripts/bench.sh -->"
+REPRODUCING = """## Reproducing
+
+    scripts/bench.sh            # N = 10, 100, 1000
+    scripts/bench.sh --quick    # N = 10, 100
+
+Environment knobs: `OPENMSS_BENCH_TIMEOUT` (seconds per OpenMSS run, default 900),
+`OPENMSS_BENCH_PEER_TIMEOUT` (seconds per peer run, default 300), `OPENMSS_BENCH_PEER_MAX_N`
+(skip peer runs above this N, e.g. 100 to leave MuJoCo's dense O(N^3) N = 1000 out),
+`OPENMSS_BENCH_BUILD_DIR` (default build-bench). The peer programs are
+`bench/peers/mujoco_chain.cpp` and `bench/peers/simbody_chain.cpp`, compiled by the script with
+g++; they build the models from the same generator source as the ADAMS data sets.
+"""
+
+
+def splice_generated(path, generated):
+    """Puts `generated` between BEGIN_MARK and END_MARK of the page at `path`, leaving the text
+    outside the marks (hand-written sections) as it is. A new page gets a title, the marks and
+    the reproducing notes; a page without the marks is not touched (the block goes to
+    path + ".generated" and a message says so), so that no hand-written text is lost."""
+    block = f"{BEGIN_MARK}\n{generated.strip()}\n{END_MARK}"
+    if not os.path.exists(path):
+        with open(path, "w") as f:
+            f.write(f"# Performance\n\n{block}\n\n{REPRODUCING}")
+        return path
+    with open(path) as f:
+        page = f.read()
+    begin, end = page.find(BEGIN_MARK), page.find(END_MARK)
+    if begin < 0 or end < begin:
+        aside = path + ".generated"
+        with open(aside, "w") as f:
+            f.write(block + "\n")
+        print(f"run_bench.py: {path} has no generated-section marks; wrote {aside} instead",
+              file=sys.stderr)
+        return aside
+    with open(path, "w") as f:
+        f.write(page[:begin] + block + page[end + len(END_MARK):])
+    return path
+
+
 def write_markdown(args, table, ref_table, sizes):
     machine = subprocess.run(["sh", "-c", "lscpu | sed -n 's/^Model name: *//p'; nproc"],
                              capture_output=True, text=True).stdout.split("\n")
-    text = f"""# Performance
-
-Side-by-side timings of OpenMSS, Simbody 3.7 and MuJoCo 2.2.2 (the Debian packages) on the
+    openmss_settings = '; '.join(f'{g} at ERROR = {e:g}' for g, e in OPENMSS_LADDER)
+    simbody = ', '.join(f'{a:g}' for _, a in SIMBODY_LADDER)
+    mujoco = ', '.join(f'{h:g}' for _, h in MUJOCO_LADDER)
+    stiff_mujoco = '; '.join(f"{k}: " + ', '.join(f'{m} dt = {h:g}' for m, h in v)
+                             for k, v in MUJOCO_STIFF_LADDER.items())
+    text = f"""Side-by-side timings of OpenMSS, Simbody 3.7 and MuJoCo 2.2.2 (the Debian packages) on the
 benchmark models of `bench/model_generators.cpp`, produced by one command:
 
     {args.command}
 
 Machine: {machine[0].strip() if machine else 'unknown'}, {machine[1].strip() if len(machine) > 1
-else '?'} cores, shared with other work while measured (times are wall-clock and noisy).
+else '?'} cores, shared with other work while measured: ratios are of CPU time (user + system
+of each whole process), which the load inflates far less than the wall time (also listed).
 Sizes: N = {', '.join(str(s) for s in sizes)}. Generated {time.strftime('%Y-%m-%d %H:%M')}.
 
 ## Models and choices
@@ -367,52 +439,55 @@ Sizes: N = {', '.join(str(s) for s in sizes)}. Generated {time.strftime('%Y-%m-%
   at rest, and runs 10 s (the issue's horizon). The small tilt keeps the motion near-linear,
   so it is not chaotic and the tip state at 10 s is a meaningful accuracy measure; a chain
   released from horizontal would diverge between any two integrators within seconds.
+- **chain-stiff4 / chain-stiff8**: the planar chain with a rotational SPRINGDAMPER on every
+  joint, stiffness over the link's inertia about its joint k/I = 1e4 and 1e8 1/s^2, damping
+  ratio 0.05 (MuJoCo: hinge stiffness and damping; Simbody: MobilityLinearSpring and
+  MobilityLinearDamper), 1 s. Stiff: the joint modes hold an explicit method's step near
+  1/sqrt(k/I), while an implicit one steps over them.
 - **fourbar**: the IFToMM benchmark A02 "N four-bar mechanism" (N square windows of unit
   1 kg thin rods, B0 moving at 1 m/s, gravity 9.81 along -y). It runs 0.5 s, before the first
   flat singular configuration (t = 0.72 s); the passages through it and the benchmark's 20 s
-  are measured against the exact solution in docs/validation.md ("IFToMM A02"). The numbers
-  below predate the benchmark's g = 9.81 and thin-rod inertia (issue 20; before: 9.80665 and
-  cylinders of radius 0.02 m). OpenMSS only: MuJoCo closes loops with soft constraints, and the Simbody program
-  does not build loops yet.
+  are measured against the exact solution in docs/validation.md ("IFToMM A02"). OpenMSS only:
+  MuJoCo closes loops with soft constraints, and the Simbody program does not build loops yet.
 - **bushing**: N free 1 kg blocks each held to the previous one by a BUSHING and a
   translational SPRINGDAMPER (6N DOF, stiff), 1 s. OpenMSS only (no MuJoCo bushing element;
   Simbody's LinearBushing uses Euler angles, not ADAMS's small-angle rotations).
-- **Settings**: OpenMSS {'; '.join(f'{g} at ERROR = {e:g}' for g, e in OPENMSS_LADDER)}
-  (MERSON not on the stiff bushing chain);
-  Simbody RungeKuttaMersonIntegrator at accuracy {', '.join(f'{a:g}' for a in SIMBODY_LADDER)}
-  (1e-6 is the issue's figure); MuJoCo RK4 at dt = {', '.join(f'{h:g}' for h in MUJOCO_LADDER)}
+- **Settings**: OpenMSS {openmss_settings} (MERSON not on the stiff models);
+  Simbody RungeKuttaMersonIntegrator at accuracy {simbody}
+  (1e-6 is the issue's figure), on the stiff chains also CPodesIntegrator (implicit BDF) at the
+  same accuracies; MuJoCo RK4 at dt = {mujoco}
   (1e-3 is the issue's figure; 1e-2 is the coarse step that still reaches a comparable
-  accuracy). Engines alternate setting by setting, so slow drifts of the machine load hit all.
+  accuracy), on the stiff chains {stiff_mujoco} (RK4 at twice the
+  larger step diverges). Engines alternate setting by setting, so slow drifts of the machine
+  load hit all.
   GSTIFF is not run at ERROR = 1e-4: orders 3–6 are only weakly stable on the chains'
   undamped high-frequency modes, and the stability-limit detection (docs/integrators.md,
   "Order selection") holds 1e-4 at order 2 for long stretches, which takes more steps than
   1e-6 for a larger error; nor below 1e-6, where the I3 corrector meets round-off on the chains.
   MERSON is the explicit Kutta–Merson method on the index-1 equations (docs/integrators.md),
-  for non-stiff models: the pendulum chains are non-stiff but oscillate without damping, which
-  an explicit method with a wide stability interval on the imaginary axis follows in far fewer
-  steps than a BDF method.
-- **Wall time** is the whole process (model construction, initial conditions, integration,
-  OpenMSS's 10 output steps), measured from outside; **peak RSS** is the child's VmHWM, polled every 5 ms.
+  for non-stiff models.
+- **Times** are of the whole process (model construction, initial conditions, integration,
+  OpenMSS's 10 output steps), measured from outside; **peak RSS** is the child's VmHWM, polled
+  every 5 ms. OpenMSS runs with the default `OPENMSS_THREADS` unless the command sets it.
 - **Accuracy**: distance of the tip (end of the last link; B0 for the four-bar row; last
   block's far end for the bushing chain) at the final time from a reference: Simbody at
   accuracy 1e-10 where the model exists in Simbody, else OpenMSS's tight run (MERSON at
-  ERROR = 1e-8; GSTIFF at 1e-8 on the stiff bushing chain). The references are cross-checked
-  below. OpenMSS reads its tip from REQUEST/3..5, which carry each
+  ERROR = 1e-8; GSTIFF at 1e-8 on the bushing chain, 1e-9 on the stiff chains). The references
+  are cross-checked below. OpenMSS reads its tip from REQUEST/3..5, which carry each
   value split into exactly printable pieces (the .req file prints six digits).
-- **ours / best peer**: our wall time over the fastest peer run that is at least as accurate;
+- **ours / best peer**: our CPU time over the least CPU time of a peer run at least as accurate;
   `*` marks rows where no peer run was as accurate and the most accurate one is used. Rows
   reading "skipped" hit the time limit (`timeout`) or a size cap, and larger sizes of the same
   setting are then skipped rather than left to hang.
 
 ## Summary
 
-For each model and size with a peer, every OpenMSS setting's ratio of our wall time to the
-fastest peer run at least as accurate (`*`: no peer run was as accurate, so the most accurate
+For each model and size with a peer, every OpenMSS setting's ratio of our CPU time to the
+least of a peer run at least as accurate (`*`: no peer run was as accurate, so the most accurate
 one is used), with our tip error in brackets (all rows are in "Results" below); then how each
-of our settings' time per step grows from N = 100 to the largest N. The issue asks for a ratio
-of at most 1.0 at N = 100 and 1000 and growth no faster than N^1.2. GSTIFF is the default
-integrator and is kept in the table; MERSON is the method for non-stiff models like these
-chains (docs/integrators.md).
+of our settings' CPU time per step grows from N = 100 to the largest N. The issue asks for a
+ratio of at most 1.0 at N = 100 and 1000 (0.5 on the stiff models) and growth no faster than
+N^1.2.
 
 {args.summary}
 
@@ -427,21 +502,8 @@ chains (docs/integrators.md).
 ## Scaling
 
 ![time per step against N](performance-scaling.png)
-
-## Reproducing
-
-    scripts/bench.sh            # N = 10, 100, 1000
-    scripts/bench.sh --quick    # N = 10, 100
-
-Environment knobs: `OPENMSS_BENCH_TIMEOUT` (seconds per OpenMSS run, default 900),
-`OPENMSS_BENCH_PEER_TIMEOUT` (seconds per peer run, default 300), `OPENMSS_BENCH_PEER_MAX_N`
-(skip peer runs above this N, e.g. 100 to leave MuJoCo's dense O(N^3) N = 1000 out),
-`OPENMSS_BENCH_BUILD_DIR` (default build-bench). The peer programs are
-`bench/peers/mujoco_chain.cpp` and `bench/peers/simbody_chain.cpp`, compiled by the script with
-g++; they build the models from the same generator source as the ADAMS data sets.
 """
-    with open(args.markdown, "w") as f:
-        f.write(text)
+    splice_generated(args.markdown, text)
 
 
 def write_plot(path, rows):
@@ -457,13 +519,13 @@ def write_plot(path, rows):
     for r in rows:
         if "steps" in r:
             key = f"{r['engine']} {r['setting']} ({r['model']})"
-            series.setdefault(key, []).append((r["n"], 1000.0 * r["wall"] / max(r["steps"], 1)))
+            series.setdefault(key, []).append((r["n"], 1000.0 * r["cpu"] / max(r["steps"], 1)))
     for key, pts in sorted(series.items()):
         pts.sort()
         if len(pts) > 1:
             ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", label=key)
     ax.set_xlabel("N (links)")
-    ax.set_ylabel("wall time per step (ms)")
+    ax.set_ylabel("CPU time per step (ms)")
     ax.set_title("Time per step against model size")
     ax.grid(True, which="both", alpha=0.3)
     ax.legend(fontsize=6)

@@ -5,20 +5,21 @@
 // KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 (the stiff chains' joint
 // springs as hinge stiffness and damping). INTEGRATOR: RK4 (default), Euler (semi-implicit,
 // joint damping implicit) or implicit (implicit in velocity). Builds the chain of
-// bench/model_generators.cpp as MJCF (nested bodies with hinge joints, the same inertias, gravity
-// and initial state), integrates with RK4 at a fixed step DT to END, and prints key=value lines:
-// wall times, steps, the tip's final position and velocity, and peak resident memory. Contacts are
-// disabled (no geoms). The four-bar row and the bushing chain are not built here: MuJoCo closes
-// loops only through soft equality constraints, and it has no bushing element, so their results
-// would not be the same model.
+// bench/model_generators.cpp as MJCF
+// (nested bodies with hinge joints, the same inertias, gravity and initial state), integrates
+// with RK4 at a fixed step DT to END, and prints key=value lines: wall times, steps, the tip's
+// final position and velocity, and peak resident memory. Contacts are disabled (no geoms).
+// The four-bar row and the bushing chain are not built here: MuJoCo closes loops only through
+// soft equality constraints, and it has no bushing element, so their results would not be the
+// same model.
 
 #include <mujoco/mujoco.h>
 #include <sys/resource.h>
 #include <unistd.h>
 
-#include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -55,7 +56,8 @@ std::string bodies(const ChainModel& m, int first, int last, const std::string& 
     const auto& b = m.bodies[i];
     const Vec3 parentOrigin = i == 0 ? Vec3{0, 0, 0} : m.bodies[i - 1].proximal;
     const auto inertia = openmss::bench::inertiaTensorInGround(b);
-    x << "<body name=\"link" << i << "\" pos=\"" << vec(minus(b.proximal, parentOrigin)) << "\">\n"
+    x << "<body name=\"link" << i << "\" pos=\"" << vec(minus(b.proximal, parentOrigin))
+      << "\">\n"
       << "<joint type=\"hinge\" pos=\"0 0 0\" axis=\"" << vec(m.joints[i].axis) << "\""
       << " stiffness=\"" << m.jointSpring.stiffness << "\" damping=\"" << m.jointSpring.damping
       << "\"/>\n"
@@ -103,9 +105,8 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
 
 int main(int argc, char** argv) {
   if (argc != 5 && argc != 6) {
-    std::cerr
-        << "usage: mujoco_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8 N END DT "
-           "[RK4|Euler|implicit]\n";
+    std::cerr << "usage: mujoco_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8 N END "
+                 "DT [RK4|Euler|implicit]\n";
     return 64;
   }
   const std::string kind = argv[1];
@@ -145,7 +146,8 @@ int main(int argc, char** argv) {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   std::printf("engine=mujoco\nsetting=%s dt=%g\nbuild_s=%.6f\nintegrate_s=%.6f\nsteps=%ld\n",
-              integrator.c_str(), dt, seconds(t0, t1), seconds(t1, t2), steps);
+              integrator.c_str(), dt,
+              seconds(t0, t1), seconds(t1, t2), steps);
   std::printf("time=%.17g\n", d->time);
   std::printf("tip=%.17g %.17g %.17g %.17g %.17g %.17g\n", d->site_xpos[3 * tip],
               d->site_xpos[3 * tip + 1], d->site_xpos[3 * tip + 2], velocity[3], velocity[4],

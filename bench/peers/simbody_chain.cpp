@@ -5,14 +5,15 @@
 // KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 (the stiff chains' joint
 // springs as MobilityLinearSpring and MobilityLinearDamper). INTEGRATOR: RKMerson (default)
 // or CPodes (Simbody's implicit BDF for stiff systems). Builds the chain of
-// bench/model_generators.cpp as a tree of Pin mobilizers (the same inertias, gravity and initial
-// state), integrates with RungeKuttaMersonIntegrator at the given accuracy to END, and prints
-// key=value lines: wall times, steps, the tip's final position and velocity, and peak resident
-// memory. The four-bar row and the bushing chain are not built here (not yet).
+// bench/model_generators.cpp as a tree of Pin mobilizers (the same inertias, gravity and
+// initial state), integrates with the integrator at the given accuracy to END, and prints
+// key=value lines: wall times, steps, the tip's final position and velocity, and peak
+// resident memory.
+// The four-bar row and the bushing chain are not built here (not yet).
 
-#include <Simbody.h>
 #include <sys/resource.h>
 
+#include <Simbody.h>
 #include <chrono>
 #include <cstdio>
 #include <iostream>

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <string>
+#include <utility>
 
 #include "support/cli_run.hpp"
 
@@ -37,6 +38,29 @@ TEST(ModelGenerators, CheckReportsTheExpectedDegreesOfFreedom) {
   expectDof("spatial", spatialPendulumChainAdm(n), n);
   expectDof("fourbar", fourBarChainAdm(n), 1);
   expectDof("bushing", bushingChainAdm(n), 6 * n);
+  expectDof("stiff", adamsDataset(modelByName("chain-stiff8", n)), n);
+}
+
+TEST(ModelGenerators, StiffChainsCarryTheStatedJointSprings) {
+  // k = ratio * I about the joint, I = m (3 r^2 + L^2) / 12 + m (L/2)^2 for the 1 kg, 1 m,
+  // r = 0.02 m links (the parallel-axis theorem, computed here independently of the
+  // generator); damping ratio 0.05 of that one-link oscillator: c = 2 0.05 sqrt(k I).
+  const double inertia = (3.0 * 0.02 * 0.02 + 1.0) / 12.0 + 0.25;
+  for (const auto& [kind, ratio] :
+       {std::pair{"chain-stiff4", 1e4}, std::pair{"chain-stiff8", 1e8}}) {
+    const ChainModel m = modelByName(kind, 5);
+    EXPECT_NEAR(m.jointSpring.stiffness / (ratio * inertia), 1.0, 1e-14) << kind;
+    EXPECT_NEAR(m.jointSpring.damping / (0.1 * std::sqrt(m.jointSpring.stiffness * inertia)), 1.0,
+                1e-14)
+        << kind;
+    const std::string adm = adamsDataset(m);
+    int springs = 0;
+    for (size_t at = adm.find(", ROTATIONAL, "); at != std::string::npos;
+         at = adm.find(", ROTATIONAL, ", at + 1))
+      ++springs;
+    EXPECT_EQ(springs, 5) << kind;  // one per joint
+  }
+  EXPECT_EQ(planarPendulumChain(5).jointSpring.stiffness, 0.0);  // the plain chains have none
 }
 
 Vec3 pointVelocity(const RigidBody& b, const Vec3& p) {
