@@ -1,9 +1,9 @@
 // Scaling of the dynamics core on planar revolute pendulum chains of N links
 // (bench/model_generators.hpp): one residual, one sparse Newton matrix (structural pattern,
 // element-local assembly, with its run-time pattern check; and by compressed forward AD of the
-// whole residual), one KLU factorisation and solve, and
-// the BDF step loop; the corrector's solve and the factorisation alone by KLU variant (ordering,
-// BTF, positions eliminated first: BM_Solve, BM_Factor, with the L+U entry counts); the dense
+// whole residual), one KLU factorisation and solve, and the BDF and HHT step loops; the
+// corrector's solve and the factorisation alone by KLU variant (ordering, BTF, positions
+// eliminated first: BM_Solve, BM_Factor, with the L+U entry counts); the dense
 // matrix and LU beside them for small N, which is where the
 // integrator's sparse threshold (BdfIntegrator::kSparseThreshold) comes from. Figures only;
 // nothing is asserted. Run: build/bench/jacobian_bench (OPENMSS_BUILD_BENCH=ON).
@@ -24,6 +24,7 @@
 #include "model_generators.hpp"
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/dense_linear_solver.hpp"
+#include "solvers/hht_integrator.hpp"
 #include "solvers/klu_linear_solver.hpp"
 
 namespace {
@@ -238,6 +239,35 @@ void BM_StepLoop(benchmark::State& state) {
   state.SetLabel(solver);
 }
 BENCHMARK(BM_StepLoop)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)->Iterations(1);
+
+// The HHT step loop over 0.2 s at ERROR 1e-6, HMAX 1e-3, as BM_StepLoop: since issue 21 HHT
+// solves problems of BdfIntegrator::kSparseThreshold unknowns and more with the sparse Newton
+// matrix and KLU (the label names the solver; the 5-link chain, 95 unknowns, is still dense).
+void BM_HhtStepLoop(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  long steps = 0;
+  const char* solver = "";
+  for (auto _ : state) {
+    analysis::MultibodyDae dae(*c.system);
+    solvers::HhtSettings s = solvers::HhtSettings::hht(-0.3);
+    s.error = 1e-6;
+    s.hmax = 1e-3;
+    s.hinit = 1e-4;
+    solvers::HhtIntegrator hht(dae, s);
+    hht.start(0.0, c.y, c.yp);
+    hht.advanceTo(0.2);
+    steps = hht.statistics().steps;
+    solver = hht.linearSolverName();
+  }
+  count(state, c);
+  state.counters["steps"] = static_cast<double>(steps);
+  state.counters["s_per_step"] = benchmark::Counter(
+      static_cast<double>(steps) * static_cast<double>(state.iterations()),
+      benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  state.SetLabel(solver);
+}
+BENCHMARK(BM_HhtStepLoop)->Arg(5)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMillisecond)
+    ->Iterations(1);
 
 // ConstraintRows (mechanics/constraint_rows.hpp): the rows of C and gamma of every equation in
 // one pass (evaluate), and Phi with nu (values), as the index-1 dynamics needs them at each
