@@ -175,7 +175,8 @@ def main():
     p.add_argument("--mujoco")
     p.add_argument("--simbody")
     p.add_argument("--sizes", default="10,100,1000")
-    p.add_argument("--models", default="chain-planar,chain-spatial,fourbar,bushing")
+    p.add_argument("--models", default="chain-planar,chain-spatial,chain-stiff4,chain-stiff8,"
+                   "fourbar,bushing")
     p.add_argument("--timeout", type=float, default=900.0, help="seconds per OpenMSS run")
     p.add_argument("--peer-timeout", type=float, default=300.0, help="seconds per peer run")
     p.add_argument("--peer-max-n", type=int, default=1000000,

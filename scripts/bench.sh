@@ -2,7 +2,8 @@
 # One command for the side-by-side benchmark (issue 8): installs the bench-only packages if
 # missing, builds OpenMSS and the model generator, compiles the MuJoCo and Simbody programs of
 # bench/peers/, runs every model in every engine (bench/run_bench.py), prints the table and
-# writes docs/performance.md and docs/performance-scaling.png.
+# writes docs/performance-scaling.png and the generated section of docs/performance.md (between
+# its BEGIN/END marks; the hand-written sections around them are kept).
 #
 #   scripts/bench.sh [--quick]        --quick: N = 10, 100 only (default 10, 100, 1000)
 #
@@ -69,6 +70,6 @@ python=/usr/bin/python3
 [[ -x "$python" ]] || python=python3
 "$python" bench/run_bench.py --openmss "$build/openmss" --generate "$build/bench/openmss-generate" \
   --mujoco "$peers/mujoco_chain" --simbody "$peers/simbody_chain" --sizes "$sizes" \
-  --models "${OPENMSS_BENCH_MODELS:-chain-planar,chain-spatial,fourbar,bushing}" \
+  --models "${OPENMSS_BENCH_MODELS:-chain-planar,chain-spatial,chain-stiff4,chain-stiff8,fourbar,bushing}" \
   --timeout "${OPENMSS_BENCH_TIMEOUT:-900}" --peer-timeout "${OPENMSS_BENCH_PEER_TIMEOUT:-300}" \
   --peer-max-n "${OPENMSS_BENCH_PEER_MAX_N:-1000000}" --command "${command% }" "${docs[@]}"
