@@ -53,7 +53,7 @@ void HhtIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   rowScale_ = Eigen::VectorXd::Ones(n);
   colScale_ = Eigen::VectorXd::Ones(n);
   // Large problems with a sparse Newton matrix: KLU, as the BDF family (a dense LU of the
-  // 1,900 unknowns of a 100-link chain took 0.6 s per Jacobian; docs/performance.md, "HHT").
+  // 1,900 unknowns of a 100-link chain took 0.6 s per Jacobian; docs/theory.md §9a).
   sparse_ = problem_.sparse() && n >= BdfIntegrator::kSparseThreshold;
   if (sparse_) {
     sparseJac_ = *problem_.pattern();
