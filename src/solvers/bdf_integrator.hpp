@@ -72,6 +72,8 @@ class BdfIntegrator final : public Integrator {
   // Extends diagonal_ by the newest accepted solution (ys_[0] at ts_[0]): one vector operation
   // per level instead of the full table per estimate.
   void updateDivided();
+  // After a displacement error-test failure at step h with estimate err: the next h_ and k_.
+  void rejectOnDisplacement(double h, double err);
 
   DaeProblem& problem_;
   MultistepSettings settings_;
@@ -116,6 +118,13 @@ class BdfIntegrator final : public Integrator {
   // error test (error-controlled unknowns) and for the corrector's convergence test.
   Eigen::VectorXd errorWeight_, correctorWeight_;
   int consecutiveErrorFailures_ = 0;
+  // The I3 velocity test (kVelocityTestSteps in the .cpp): 1 for velocities outside the
+  // displacement error test; their weights kVelocityTestSteps h / (ERROR (1 + |v|)); whether
+  // the problem has any; the last attempt's estimate, and whether it alone rejected the step.
+  Eigen::VectorXd velocityTestMask_, velocityWeight_;
+  bool velocityTested_ = false;
+  double velocityError_ = 0.0;
+  bool velocityRejected_ = false;
   // diagonal_[l] = y[t_n, ..., t_n-l], the divided differences through the newest l+1 accepted
   // solutions (l <= KMAX+2); previousDiagonal_ is the one of the step before (work storage).
   std::vector<Eigen::VectorXd> diagonal_, previousDiagonal_;
