@@ -46,10 +46,10 @@ class Curve final : public CurveEvaluator, public PlainRoutine {
     return fatalError();
   }
 
-  // The routine's IORD = 0, 1, 2 at alpha; the third and fourth derivatives (which only a time
-  // jet of a moving contact point reads) are differences of its second derivative, step
-  // 1e-4 (MAXPAR - MINPAR): their error, h^2 C'''''/6 + eps |C''| / h^2, is about 1e-8 of the
-  // curve's scale for smooth curves. A closed curve repeats with period MAXPAR - MINPAR.
+  // The routine's IORD = 0, 1, 2 at alpha; the third and fourth derivatives (the Newton matrix
+  // and acceleration terms of PTCV/CVCV read them) are differences of its second derivative, step
+  // 1e-4 (MAXPAR - MINPAR): their error, h^2 |C(5)| / 6 + eps |C''| / h^2, measured 5e-8 for a
+  // circle of radius 0.8 over 0..2 pi. A closed curve repeats with period MAXPAR - MINPAR.
   void derivatives(double alpha, int comp, double out[5]) const override {
     const double span = shape_.maxPar - shape_.minPar;
     if (shape_.closed) alpha -= span * std::floor((alpha - shape_.minPar) / span);

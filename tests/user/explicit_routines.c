@@ -59,13 +59,14 @@ void Stop_fie(const struct sAdamsField* f, double time, double* disp, double* ve
 }
 
 /* Units_var: the model-query utilities, PAR(0) selecting the value: 0..3 GTUNTS's scales
- * (time, length, force, mass), 4 its exists flag, 5 GETMOD, 6 GETINM, 7 whether GTUNTS's
- * unit names equal STRING/PAR(1). GETMOD is called in every pass (it is declared like a SYSFNC). */
+ * (time, length, force, mass), 4 its exists flag, 5 GETMOD, 6 GETINM, 7 the character code of
+ * GTUNTS's units[PAR(1)], 8 whether units[12] ends the text. GETMOD is called in every pass
+ * (it is declared like a SYSFNC). */
 void Units_var(const struct sAdamsVariable* v, double time, int dflag, int iflag,
                double* result) {
-  int exists = 0, mode = 0, inm = 0, n = 0, err = 0;
+  int exists = 0, mode = 0, inm = 0;
   double scales[4] = {0.0, 0.0, 0.0, 0.0};
-  char units[13], expected[64];
+  char units[13];
   const int what = (int)v->PAR[0];
   (void)time;
   (void)dflag;
@@ -77,13 +78,8 @@ void Units_var(const struct sAdamsVariable* v, double time, int dflag, int iflag
   else if (what == 4) *result = exists;
   else if (what == 5) *result = mode;
   else if (what == 6) *result = inm;
-  else {
-    int same = 1;
-    c_gtstrg((int)v->PAR[1], expected, &n, &err);
-    /* The STRING may lose trailing blanks: the rest of the 12 characters must be blanks. */
-    for (int k = 0; k < 12; ++k) same = same && (k < n ? expected[k] == units[k] : units[k] == ' ');
-    *result = same && n <= 12 && units[12] == '\0';
-  }
+  else if (what == 7) *result = (unsigned char)units[(int)v->PAR[1] % 12];
+  else *result = units[12] == '\0';
 }
 
 /* Cursub: a circle of radius PAR(0) about the origin in the x-y plane, alpha the angle from

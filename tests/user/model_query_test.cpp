@@ -21,15 +21,20 @@ namespace {
 
 const std::string kC = OPENMSS_TEST_C_ROUTINES;
 
-// VARIABLE/k returns Units_var(PAR = k - 1, 9): every value of the routine, one per variable,
-// evaluated at the initial state; VARIABLE/20 is the expression MODE.
-std::vector<double> values(const std::string& units, const std::string& expectedNames) {
-  std::string text =
-      "q\n" + units + "PART/1, GROUND\nMARKER/10, PART=1\nSTRING/9, STRING=" + expectedNames + "\n";
-  for (int k = 0; k < 8; ++k)
-    text += "VARIABLE/" + std::to_string(k + 1) + ", FUNCTION=USER(" + std::to_string(k) +
-            ", 9), ROUTINE=\"" + kC + "::Units_var\"\n";
-  text += "VARIABLE/20, FUNCTION=MODE\nEND\n";
+// The routine's values, one VARIABLE each, evaluated at the initial state: Units_var(k) for
+// k = 0..6, then the 12 characters of GTUNTS's units, then its terminator test; last the
+// expression MODE.
+std::vector<double> values(const std::string& units) {
+  std::string text = "q\n" + units + "PART/1, GROUND\nMARKER/10, PART=1\n";
+  int id = 0;
+  auto add = [&](int what, int at) {
+    text += "VARIABLE/" + std::to_string(++id) + ", FUNCTION=USER(" + std::to_string(what) + ", " +
+            std::to_string(at) + "), ROUTINE=\"" + kC + "::Units_var\"\n";
+  };
+  for (int k = 0; k < 7; ++k) add(k, 0);
+  for (int c = 0; c < 12; ++c) add(7, c);
+  add(8, 0);
+  text += "VARIABLE/99, FUNCTION=MODE\nEND\n";
   language::Dataset ds;
   Diagnostics d;
   language::readDatasetText(text, "q.adm", ds, d);
@@ -51,33 +56,40 @@ std::vector<double> values(const std::string& units, const std::string& expected
   return out;
 }
 
+// The 12 characters GTUNTS gave, from values() entries 7..18.
+std::string unitText(const std::vector<double>& v) {
+  std::string s;
+  for (std::size_t k = 7; k < 19 && k < v.size(); ++k) s += static_cast<char>(v[k]);
+  return s;
+}
+
 TEST(ModelQueries, GtuntsGivesTheUnitsInSi) {
   // The UNITS statement's factors: 1 ms = 1e-3 s, 1 in = 0.0254 m (exact), 1 lbf =
   // 4.4482216152605 N and 1 lbm = 0.45359237 kg (exact definitions).
   const std::vector<double> v =
-      values("UNITS/ FORCE=POUND_FORCE, MASS=POUND_MASS, LENGTH=INCH, TIME=MILLISECONDS\n",
-             "\"ms in lbflbm\"");
-  ASSERT_EQ(v.size(), 9u);
+      values("UNITS/ FORCE=POUND_FORCE, MASS=POUND_MASS, LENGTH=INCH, TIME=MILLISECONDS\n");
+  ASSERT_EQ(v.size(), 21u);
   EXPECT_EQ(v[0], 1e-3);
   EXPECT_EQ(v[1], 0.0254);
   EXPECT_EQ(v[2], 4.4482216152605);
   EXPECT_EQ(v[3], 0.45359237);
   EXPECT_EQ(v[4], 1.0);  // a UNITS statement exists
-  EXPECT_EQ(v[7], 1.0);  // the symbols, 3 characters each
+  EXPECT_EQ(unitText(v), "ms in lbflbm");
+  EXPECT_EQ(v[19], 1.0);  // NUL-terminated after 12 characters
   // Without UNITS: SI, no statement.
-  const std::vector<double> w = values("", "\"s  m  N  kg \"");
-  ASSERT_EQ(w.size(), 9u);
+  const std::vector<double> w = values("");
+  ASSERT_EQ(w.size(), 21u);
   for (int k = 0; k < 4; ++k) EXPECT_EQ(w[static_cast<std::size_t>(k)], 1.0) << k;
   EXPECT_EQ(w[4], 0.0);
-  EXPECT_EQ(w[7], 1.0);
+  EXPECT_EQ(unitText(w), "s  m  N  kg ");
 }
 
 TEST(ModelQueries, GetmodIsTheModeExpression) {
-  const std::vector<double> v = values("", "x");
-  ASSERT_EQ(v.size(), 9u);
-  EXPECT_EQ(v[5], v[8]);  // GETMOD == MODE
+  const std::vector<double> v = values("");
+  ASSERT_EQ(v.size(), 21u);
+  EXPECT_EQ(v[5], v[20]);  // GETMOD == MODE
   EXPECT_GE(v[5], 1.0);
-  EXPECT_EQ(v[6], v[8] == 3.0 ? 1.0 : 0.0);  // GETINM
+  EXPECT_EQ(v[6], v[20] == 3.0 ? 1.0 : 0.0);  // GETINM
 }
 
 // Outside a routine: no model, so no UNITS; FORTRAN's CHARACTER*20 is blank-padded.
