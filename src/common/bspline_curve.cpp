@@ -148,6 +148,10 @@ BSplineCurve::BSplineCurve(const std::vector<std::array<double, 3>>& points, int
 }
 
 void BSplineCurve::derivatives(double alpha, int comp, double out[kDerivatives]) const {
+  if (user_) {
+    user_->derivatives(alpha, comp, out);
+    return;
+  }
   if (closed_) alpha -= 2.0 * std::floor((alpha + 1.0) / 2.0);  // into [-1, 1)
   const double scale = 0.5 * (uMax_ - uMin_);                   // du / d alpha
   const double u = uMin_ + (alpha + 1.0) * scale;

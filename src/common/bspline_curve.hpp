@@ -13,10 +13,19 @@
 // nothing (orders up to kMaxOrder).
 
 #include <array>
+#include <memory>
 #include <string>
 #include <vector>
 
 namespace openmss {
+
+// A curve given by code instead of points: CURVE/id, FUNCTION=USER(...) (CURSUB,
+// src/user/curve_routine.cpp). Same contract as BSplineCurve::derivatives.
+class CurveEvaluator {
+ public:
+  virtual ~CurveEvaluator() = default;
+  virtual void derivatives(double alpha, int comp, double out[5]) const = 0;
+};
 
 class BSplineCurve {
  public:
@@ -31,6 +40,10 @@ class BSplineCurve {
   // Precondition: check(...) returned "".
   BSplineCurve(const std::vector<std::array<double, 3>>& points, int order, bool closed,
                bool throughPoints);
+  // A user curve (CURSUB) over [minPar, maxPar]: derivatives() asks `user`.
+  BSplineCurve(std::shared_ptr<const CurveEvaluator> user, double minPar, double maxPar,
+               bool closed)
+      : minPar_(minPar), maxPar_(maxPar), closed_(closed), user_(std::move(user)) {}
 
   // d^k C / d alpha^k (k = 0..4) of component comp (0, 1, 2 = x, y, z) at alpha. A closed curve
   // repeats with period 2; an open one continues its end polynomial pieces outside [-1, 1].
@@ -38,6 +51,9 @@ class BSplineCurve {
 
   int order() const { return order_; }
   bool closed() const { return closed_; }
+  // The parameter's range: -1..1, or a user curve's MINPAR..MAXPAR.
+  double minParameter() const { return minPar_; }
+  double maxParameter() const { return maxPar_; }
 
  private:
   // One B-spline: knots, control points (x, y, z), degree.
@@ -50,8 +66,10 @@ class BSplineCurve {
 
   std::array<Piecewise, kDerivatives> hodographs_;  // the curve and its derivative curves in u
   double uMin_ = 0.0, uMax_ = 1.0;
+  double minPar_ = -1.0, maxPar_ = 1.0;
   int order_ = 4;
   bool closed_ = false;
+  std::shared_ptr<const CurveEvaluator> user_;
 };
 
 }  // namespace openmss

@@ -54,7 +54,8 @@ std::array<S, 2> curveContactStep(const BSplineCurve& ci, const BSplineCurve& cj
 inline bool localContactParameters(const BSplineCurve& ci, int samplesI, const BSplineCurve& cj,
                                    int samplesJ, const V3<double>& o, const M3<double>& r,
                                    const double* start, std::array<double, 2>& out) {
-  const double stepA = 2.0 / samplesI, stepB = 2.0 / samplesJ;
+  const double stepA = (ci.maxParameter() - ci.minParameter()) / samplesI,
+               stepB = (cj.maxParameter() - cj.minParameter()) / samplesJ;
   double a = start[0], b = start[1];
   bool closing = false;
   for (int it = 0; it < 12; ++it) {
@@ -87,23 +88,26 @@ inline std::array<double, 2> curveContactParameters(const BSplineCurve& ci, int 
     std::array<double, 2> ab{};
     if (localContactParameters(ci, samplesI, cj, samplesJ, o, r, warm, ab)) return ab;
   }
+  // Samples over each curve's parameter range (-1..1, or a user curve's MINPAR..MAXPAR).
+  const double a0 = ci.minParameter(), spanA = ci.maxParameter() - a0;
+  const double b0 = cj.minParameter(), spanB = cj.maxParameter() - b0;
   std::vector<V3<double>> pj(samplesJ + 1);
   for (int s = 0; s <= samplesJ; ++s)
-    pj[s] = o + r * curveDerivative(cj, -1.0 + 2.0 * s / samplesJ, 0);
-  double bestA = -1.0, bestB = -1.0, best = INFINITY;
+    pj[s] = o + r * curveDerivative(cj, b0 + spanB * s / samplesJ, 0);
+  double bestA = a0, bestB = b0, best = INFINITY;
   for (int s = 0; s <= samplesI; ++s) {
-    const double a = -1.0 + 2.0 * s / samplesI;
+    const double a = a0 + spanA * s / samplesI;
     const V3<double> c = curveDerivative(ci, a, 0);
     for (int u = 0; u <= samplesJ; ++u) {
       const double dx = pj[u].x - c.x, dy = pj[u].y - c.y, d2 = dx * dx + dy * dy;
       if (d2 < best) {
         best = d2;
         bestA = a;
-        bestB = -1.0 + 2.0 * u / samplesJ;
+        bestB = b0 + spanB * u / samplesJ;
       }
     }
   }
-  const double stepA = 2.0 / samplesI, stepB = 2.0 / samplesJ;
+  const double stepA = spanA / samplesI, stepB = spanB / samplesJ;
   double a = bestA, b = bestB;
   for (int it = 0; it < 50; ++it) {
     const std::array<double, 2> step = curveContactStep(ci, cj, o, r, a, b);

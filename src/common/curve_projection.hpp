@@ -54,7 +54,7 @@ V3<S> curveDerivative(const BSplineCurve& curve, const S& alpha, int k) {
 // whole curve). The result depends only on the start, so runs stay bit-identical.
 inline bool localCurveParameter(const BSplineCurve& curve, const V3<double>& q, int samples,
                                 double start, double& out) {
-  const double step = 2.0 / samples;
+  const double step = (curve.maxParameter() - curve.minParameter()) / samples;
   double a = start;
   bool closing = false;  // the step before was already small: this one polishes
   for (int it = 0; it < 12; ++it) {
@@ -87,9 +87,11 @@ inline double nearestCurveParameter(const BSplineCurve& curve, const V3<double>&
     if (localCurveParameter(curve, q, samples, *warm, a)) return a;
   }
   auto point = [&](double a) { return curveDerivative(curve, a, 0); };
-  double best = -1.0, bestDistance = INFINITY;
+  // Samples over the parameter range (-1..1, or a user curve's MINPAR..MAXPAR).
+  const double a0 = curve.minParameter(), span = curve.maxParameter() - a0;
+  double best = a0, bestDistance = INFINITY;
   for (int s = 0; s <= samples; ++s) {
-    const double a = -1.0 + 2.0 * s / samples;
+    const double a = a0 + span * s / samples;
     const V3<double> d = point(a) - q;
     const double distance = dot(d, d);
     if (distance < bestDistance) {
@@ -97,7 +99,7 @@ inline double nearestCurveParameter(const BSplineCurve& curve, const V3<double>&
       best = a;
     }
   }
-  const double step = 2.0 / samples;
+  const double step = span / samples;
   double a = best;
   for (int it = 0; it < 50; ++it) {
     const V3<double> c = point(a), c1 = curveDerivative(curve, a, 1),

@@ -392,7 +392,7 @@ std::vector<StatementSpec> buildStatementTable() {
   t.push_back(statement("POUTPUT", R, {integers("VARIABLES")}));
   t.push_back(statement("SPLINE", R,
                         {reals("X"), reals("Y"), flag("LINEAR_EXTRAPOLATE"), word("FILE"),
-                         word("BLOCK"), integer("CHANNEL")}));
+                         word("BLOCK"), integer("CHANNEL"), routine()}));
   t.push_back(statement("STRING", R, {text("STRING")}));
   t.push_back(statement("SURFACE", R,
                         {expression("FUNCTION"), routine(), real("MINPAR", 2, 2),

@@ -82,7 +82,8 @@ void ExpressionRunState::commitCurveParameters(const MultibodySystem& system, do
     if (!curveRunOff_.empty()) continue;
     // 1e-9: the end itself is on the curve; round-off past it is not a run-off.
     auto off = [](const BSplineCurve& c, double a) {
-      return !c.closed() && std::abs(a) > 1.0 + 1e-9;
+      const double lo = c.minParameter(), hi = c.maxParameter(), slack = 1e-9 * 0.5 * (hi - lo);
+      return !c.closed() && (a < lo - slack || a > hi + slack);
     };
     std::string what;
     int curve = -1;

@@ -8,6 +8,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <type_traits>
 #include <vector>
 
 #include <Eigen/Dense>
@@ -131,7 +132,7 @@ class ForceElements {
   template <class T>
   ElementLoads<T> springDamperLoads(int k, const T* y) const;
   template <class T>
-  ElementLoads<T> linearFieldLoads(int k, const T* y) const;
+  ElementLoads<T> linearFieldLoads(int k, double t, const T* y) const;
   template <class T>
   ElementLoads<T> vectorForceLoads(int k, double t, const T* y,
                                    const DynamicReads<T>* reads) const;
@@ -256,21 +257,50 @@ ElementLoads<T> ForceElements::springDamperLoads(int k, const T* y) const {
   return l;
 }
 
+// FIELD with FUNCTION=USER (FIESUB): the routine's load at the values of (q, qdot); on duals
+// its 6x6 partials chain the derivatives of q and qdot (docs/user-subroutines.md).
 template <class T>
-ElementLoads<T> ForceElements::linearFieldLoads(int k, const T* y) const {
+void userFieldLoad(const user::FieldRoutine& routine, double t, const T q[6], const T qdot[6],
+                   T load[6]) {
+  double d[6], v[6], field[6], kd[36], cd[36];
+  for (int c = 0; c < 6; ++c) {
+    d[c] = valueOf(q[c]);
+    v[c] = valueOf(qdot[c]);
+  }
+  constexpr bool plain = std::is_same_v<T, double>;
+  routine.evaluate(t, d, v, !plain, field, kd, cd);
+  for (int r = 0; r < 6; ++r) {
+    if constexpr (plain) {
+      load[r] = field[r];
+    } else {
+      T out(field[r]);
+      out.d = 0.0 * q[0].d;  // zero of the derivative's type
+      for (int c = 0; c < 6; ++c)
+        out.d = out.d + kd[r + 6 * c] * q[c].d + cd[r + 6 * c] * qdot[c].d;
+      load[r] = out;
+    }
+  }
+}
+
+template <class T>
+ElementLoads<T> ForceElements::linearFieldLoads(int k, double t, const T* y) const {
   const model::LinearField& f = model_->linearFields[k];
   const MarkerState<T> mi = markerState(*model_, layout_, f.iMarker, y);
   const MarkerState<T> mj = markerState(*model_, layout_, f.jMarker, y);
   T q[6], qdot[6];
   fieldDisplacement(mi, mj, q, qdot);
   T load[6];
-  for (int r = 0; r < 6; ++r) {
-    T sum = T(f.preload(r));
-    for (int c = 0; c < 6; ++c) {
-      if (f.stiffness(r, c) != 0.0) sum = sum - f.stiffness(r, c) * (q[c] - f.reference(c));
-      if (f.damping(r, c) != 0.0) sum = sum - f.damping(r, c) * qdot[c];
+  if (f.user) {
+    userFieldLoad(*f.user, t, q, qdot, load);
+  } else {
+    for (int r = 0; r < 6; ++r) {
+      T sum = T(f.preload(r));
+      for (int c = 0; c < 6; ++c) {
+        if (f.stiffness(r, c) != 0.0) sum = sum - f.stiffness(r, c) * (q[c] - f.reference(c));
+        if (f.damping(r, c) != 0.0) sum = sum - f.damping(r, c) * qdot[c];
+      }
+      load[r] = sum;
     }
-    load[r] = sum;
   }
   ElementLoads<T> l;
   l.force = mj.a * V3<T>(load[0], load[1], load[2]);
@@ -336,7 +366,7 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
   switch (e.kind) {
     case ForceElementKind::SForce: return sforceLoads(e.index, t, y, reads);
     case ForceElementKind::SpringDamper: return springDamperLoads(e.index, y);
-    case ForceElementKind::LinearField: return linearFieldLoads(e.index, y);
+    case ForceElementKind::LinearField: return linearFieldLoads(e.index, t, y);
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
     case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
     case ForceElementKind::MultiPoint: return {};  // multiPointLoads

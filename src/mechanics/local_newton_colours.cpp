@@ -26,9 +26,14 @@ bool LocalNewtonMatrix::coloursMayRunInParallel() const {
   if (l.userDifferential != 0 || l.userAlgebraic != 0) return false;
   const auto& elements = system_.forceElements().elements();
   if (elements.size() < kParallelElements) return false;
-  for (const ForceElementRef& e : elements)
+  for (const ForceElementRef& e : elements) {
     if (e.kind != ForceElementKind::SpringDamper && e.kind != ForceElementKind::LinearField)
       return false;
+    // A FIELD with FUNCTION=USER calls user code (FIESUB): serial too.
+    if (e.kind == ForceElementKind::LinearField &&
+        system_.model().linearFields[static_cast<size_t>(e.index)].user)
+      return false;
+  }
   return true;
 }
 

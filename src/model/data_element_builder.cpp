@@ -6,6 +6,10 @@
 #include <vector>
 
 #include "model/statement_arguments.hpp"
+#include "model/user_routine_binding.hpp"
+#include "model/user_subroutine_arguments.hpp"
+#include "user/curve_routine.hpp"
+#include "user/spline_reader.hpp"
 
 namespace openmss::model {
 namespace {
@@ -21,11 +25,60 @@ int firstNotIncreasing(const std::vector<double>& v) {
   return -1;
 }
 
+// SPLINE/id, FILE=, BLOCK=, ROUTINE=: the user's SPLINE_READ reads the file (docs/user-
+// subroutines.md); its values are checked as X= and Y= are.
+void buildUserSpline(const Statement& s, Model& model, Diagnostics& diags) {
+  const Argument* file = s.find("FILE");
+  const Argument* block = s.find("BLOCK");
+  user::ElementData e;
+  e.subject = s.subject();
+  e.id = s.id ? *s.id : 0;
+  e.data = userModelData(model);
+  user::SplineValues v;
+  std::string error;
+  const std::string fileName = file->values.empty() ? "" : file->values[0].text;
+  if (!user::readUserSpline(e, fileName,
+                            block && !block->values.empty() ? block->values[0].text : "",
+                            elementRoutineName(s), userLibraryDirectory(model), v, error)) {
+    diags.error(file->where, s.subject(), error,
+                "Supply the library that defines SPLINE_READ (ROUTINE=lib::name, or openmss run "
+                "--user-library LIB), or list the values with X= and Y=.");
+    return;
+  }
+  std::string problem;
+  if (v.x.size() < 4)
+    problem =
+        "SPLINE_READ stored " + std::to_string(v.x.size()) + " x values; a SPLINE needs at least 4";
+  else if (firstNotIncreasing(v.x) >= 0)
+    problem = "SPLINE_READ stored x values that do not increase strictly (value " +
+              std::to_string(firstNotIncreasing(v.x) + 1) + ")";
+  else if (firstNotIncreasing(v.z) >= 0)
+    problem = "SPLINE_READ stored z values that do not increase";
+  if (!problem.empty()) {
+    diags.error(file->where, s.subject(), problem, "Correct the file or the reader.");
+    return;
+  }
+  if (!s.id || model.splineIndex.count(*s.id)) return;
+  SplineData data;
+  data.id = *s.id;
+  data.where = s.where;
+  data.spline =
+      std::make_shared<const Spline>(v.x, std::move(v.z), v.curves, s.has("LINEAR_EXTRAPOLATE"));
+  model.splineIndex[data.id] = static_cast<int>(model.splines.size());
+  model.splines.push_back(std::move(data));
+}
+
 void buildSpline(const Statement& s, Model& model, Diagnostics& diags) {
+  if (s.has("FILE") && (s.has("ROUTINE") || !user::defaultLibrary().empty())) {
+    buildUserSpline(s, model, diags);
+    return;
+  }
   if (s.has("FILE")) {
     diags.error(s.find("FILE")->where, s.subject(),
-                "SPLINE data from a FILE (BLOCK, CHANNEL) is not supported yet",
-                "List the values in the data set with X=x1,...,xn and Y=y1,...,yn.");
+                "SPLINE data from a FILE (BLOCK, CHANNEL) is not supported yet without a "
+                "SPLINE_READ reader",
+                "List the values in the data set with X=x1,...,xn and Y=y1,...,yn, or give "
+                "ROUTINE=lib::name for a user SPLINE_READ that reads the file.");
     return;
   }
   const Argument* xArg = s.find("X");
@@ -161,12 +214,57 @@ void buildMatrix(const Statement& s, Model& model, Diagnostics& diags) {
   model.matrices.push_back({*s.id, std::move(m), s.where});
 }
 
+// CURVE/id, FUNCTION=USER(...): CURSUB gives the curve over MINPAR..MAXPAR (default -1..1).
+void buildUserCurve(const Statement& s, Model& model, Diagnostics& diags) {
+  StatementArguments a(s, diags);
+  bool ok = true;
+  for (const char* name : {"MATRIX", "CURVE_POINTS"})
+    if (const Argument* arg = s.find(name)) {
+      diags.error(arg->where, s.subject(),
+                  std::string(name) + " with FUNCTION=USER(...): CURSUB gives the whole curve",
+                  std::string("Remove ") + name + ", or FUNCTION to use the matrix.");
+      ok = false;
+    }
+  user::CurveShape shape;
+  shape.closed = s.has("CLOSED");
+  if (s.has("ORDER"))
+    if (auto o = a.integer("ORDER")) shape.order = static_cast<int>(*o);
+  if (s.has("MINPAR"))
+    if (auto v = a.real("MINPAR")) shape.minPar = *v;
+  if (s.has("MAXPAR"))
+    if (auto v = a.real("MAXPAR")) shape.maxPar = *v;
+  if (!(shape.maxPar > shape.minPar)) {
+    diags.error(s.where, s.subject(), "MAXPAR must be greater than MINPAR",
+                "Give the parameter range of the curve CURSUB computes, MINPAR < MAXPAR.");
+    ok = false;
+  }
+  const auto par = userParameters(s, diags);
+  if (!par || !ok || !s.id || model.curveIndex.count(*s.id)) return;
+  user::ElementData e;
+  e.subject = s.subject();
+  e.id = *s.id;
+  e.par = *par;
+  e.data = userModelData(model);
+  std::string error;
+  CurveData data;
+  data.id = *s.id;
+  data.where = s.where;
+  data.curve =
+      user::loadCurveRoutine(e, shape, elementRoutineName(s), userLibraryDirectory(model), error);
+  if (!data.curve) {
+    diags.error(s.find("FUNCTION")->where, s.subject(), error,
+                "Supply the library that defines CURSUB (ROUTINE=lib::name on the statement, or "
+                "openmss run --user-library LIB); docs/user-subroutines.md says how to build one.");
+    return;
+  }
+  model.curveIndex[data.id] = static_cast<int>(model.curves.size());
+  model.curves.push_back(std::move(data));
+}
+
 // After the matrices: a CURVE refers to one.
 void buildCurve(const Statement& s, Model& model, Diagnostics& diags) {
   if (s.has("FUNCTION")) {
-    diags.error(s.find("FUNCTION")->where, s.subject(),
-                "FUNCTION=USER(...) curves (CURSUB) are not supported yet",
-                "Define the curve with MATRIX=id (points or B-spline control points).");
+    buildUserCurve(s, model, diags);
     return;
   }
   const auto matrixId = StatementArguments(s, diags).integer("MATRIX");

@@ -76,14 +76,6 @@ void rejectSamePart(const Statement& s, const Model& model, int i, int j, const 
               std::string("Put I and ") + jName + " on the two parts the element connects.");
 }
 
-void rejectUserFunction(const Statement& s, const char* routine, Diagnostics& diags) {
-  for (const char* name : {"FUNCTION", "ROUTINE"})
-    if (const Argument* a = s.find(name))
-      diags.error(a->where, s.subject(),
-                  std::string(name) + "=: user-written " + routine + " is not supported yet",
-                  "Give the element's data in the statement itself.");
-}
-
 void buildSpringDamper(const Statement& s, Model& model, Diagnostics& diags) {
   StatementArguments a(s, diags);
   SpringDamper sd;
@@ -180,7 +172,12 @@ void buildField(const Statement& s, Model& model, Diagnostics& diags) {
   f.where = s.where;
   f.iMarker = markerReference(model, s, "I", diags);
   f.jMarker = markerReference(model, s, "J", diags);
-  rejectUserFunction(s, "FIESUB", diags);
+  if (s.has("FUNCTION")) {  // FIESUB (docs/user-subroutines.md)
+    if (f.iMarker < 0 || f.jMarker < 0) return;
+    rejectSamePart(s, model, f.iMarker, f.jMarker, "J", diags);
+    if (bindUserField(model, s, f, diags)) model.linearFields.push_back(f);
+    return;
+  }
   if (auto k = a.numbers("KMATRIX", 36)) {
     f.stiffness = matrixByColumns(*k);
   } else if (!s.has("KMATRIX")) {

@@ -20,6 +20,7 @@
 #include "model/analysis_status.hpp"
 #include "model/contact.hpp"
 #include "model/measure.hpp"
+#include "user/element_interfaces.hpp"
 #include "user/gse_routines.hpp"
 
 namespace openmss::model {
@@ -29,6 +30,7 @@ struct Units {
   // Unit names as the UNITS statement gives them (canonical words).
   std::string length = "METER", mass = "KILOGRAM", time = "SECOND", force = "NEWTON";
   std::string description = "m, kg, s, N";
+  bool given = false;  // a UNITS statement was read (GTUNTS)
 };
 
 struct Part {
@@ -101,6 +103,8 @@ struct Coupler {
   std::vector<int> joints;    // indices into Model::joints (2 or 3)
   std::vector<bool> rotation; // per joint: its rotational (true) or translational displacement
   std::vector<double> scales; // one per joint
+  // FUNCTION=USER(...): COUSUB/COUXX/COUXX2 give the constraint instead of the scales.
+  std::shared_ptr<const user::CouplerRoutine> user;
   SourceLocation where;
 };
 
@@ -189,6 +193,8 @@ struct LinearField {
   Eigen::Matrix<double, 6, 6> damping = Eigen::Matrix<double, 6, 6>::Zero();
   Eigen::Matrix<double, 6, 1> reference = Eigen::Matrix<double, 6, 1>::Zero();
   Eigen::Matrix<double, 6, 1> preload = Eigen::Matrix<double, 6, 1>::Zero();
+  // FIELD with FUNCTION=USER(...): FIESUB gives the load instead of the matrices above.
+  std::shared_ptr<const user::FieldRoutine> user;
   SourceLocation where;
 };
 

@@ -65,7 +65,35 @@ std::optional<double> lookup(const language::Statement& s, const char* arg,
 
 }  // namespace
 
+double unitInSi(const std::string& name) {
+  for (const auto* table : {&forceUnits(), &massUnits(), &lengthUnits(), &timeUnits()})
+    if (auto it = table->find(name); it != table->end()) return it->second;
+  return 1.0;
+}
+
+std::string unitSymbol(const std::string& name) {
+  static const std::map<std::string, std::string> symbols = {
+      {"NEWTON", "N"},        {"KNEWTON", "kN"},       {"MEGANEWTON", "MN"},
+      {"MILLINEWTON", "mN"},  {"MICRONEWTON", "uN"},   {"NANONEWTON", "nN"},
+      {"CENTINEWTON", "cN"},  {"DYNE", "dyn"},         {"KILOGRAM_FORCE", "kgf"},
+      {"POUND_FORCE", "lbf"}, {"KPOUND_FORCE", "klb"}, {"OUNCE_FORCE", "ozf"},
+      {"POUNDAL", "pdl"},     {"KILOGRAM", "kg"},      {"GRAM", "g"},
+      {"MILLIGRAM", "mg"},    {"MICROGRAM", "ug"},     {"NANOGRAM", "ng"},
+      {"TONNE", "t"},         {"POUND_MASS", "lbm"},   {"KPOUND_MASS", "klm"},
+      {"OUNCE_MASS", "oz"},   {"SLUG", "slg"},         {"SLINCH", "sli"},
+      {"US_TON", "ton"},      {"METER", "m"},          {"KILOMETER", "km"},
+      {"CENTIMETER", "cm"},   {"MILLIMETER", "mm"},    {"MICROMETER", "um"},
+      {"NANOMETER", "nm"},    {"ANGSTROM", "A"},       {"INCH", "in"},
+      {"FOOT", "ft"},         {"YARD", "yd"},          {"MILE", "mi"},
+      {"MILS", "mil"},        {"MICROINCH", "uin"},    {"SECOND", "s"},
+      {"MILLISECONDS", "ms"}, {"MICROSECOND", "us"},   {"NANOSECOND", "ns"},
+      {"MINUTE", "min"},      {"HOUR", "h"},           {"DAY", "d"}};
+  auto it = symbols.find(name);
+  return it == symbols.end() ? name.substr(0, 3) : it->second;
+}
+
 void applyUnits(const language::Statement& s, Units& units, Diagnostics& diags) {
+  units.given = true;
   double f = 1.0, m = 1.0, l = 1.0, t = 1.0;
   if (const language::Argument* sys = s.find("SYSTEM")) {
     const std::string w = sys->values.empty() ? "" : sys->values[0].text;

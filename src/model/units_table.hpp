@@ -10,4 +10,9 @@ namespace openmss::model {
 
 void applyUnits(const language::Statement& s, Units& units, Diagnostics& diags);
 
+// SI value of one unit of a canonical unit name (Units::length, ...); 1 for an unknown name.
+double unitInSi(const std::string& name);
+// Its symbol for GTUNTS, at most 3 characters (s, ms, mm, in, N, lbf, kg, ...).
+std::string unitSymbol(const std::string& name);
+
 }  // namespace openmss::model

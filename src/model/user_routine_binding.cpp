@@ -3,7 +3,9 @@
 #include <filesystem>
 
 #include "model/model_builder.hpp"
+#include "model/units_table.hpp"
 #include "model/user_subroutine_arguments.hpp"
+#include "user/field_routine.hpp"
 
 namespace openmss::model {
 
@@ -12,10 +14,8 @@ std::string userLibraryDirectory(const Model& model) {
   return dir.empty() ? "." : dir;
 }
 
-namespace {
-
 // What GTARAY, GTSTRG, GTCURV, AKISPL and CUBSPL read (shared with the model's own data).
-std::shared_ptr<const user::ModelData> modelData(const Model& model) {
+std::shared_ptr<const user::ModelData> userModelData(const Model& model) {
   auto d = std::make_shared<user::ModelData>();
   for (const SplineData& s : model.splines)
     if (s.spline) d->splines[s.id] = s.spline;
@@ -25,10 +25,19 @@ std::shared_ptr<const user::ModelData> modelData(const Model& model) {
     if (a.kind == DataArray::Kind::IC || a.kind == DataArray::Kind::Constants)
       d->arrays[a.id] = a.numbers;
   for (const StringData& s : model.strings) d->strings[s.id] = s.text;
+  // SYSTEM=NONE: consistent units of no stated size (scales 1, blank names).
+  d->unitsGiven = model.units.given;
+  const bool named = model.units.description.rfind("consistent", 0) != 0;
+  const std::string* names[4] = {&model.units.time, &model.units.length, &model.units.force,
+                                 &model.units.mass};
+  for (int k = 0; k < 4; ++k) {
+    d->unitScales[static_cast<size_t>(k)] = named ? unitInSi(*names[k]) : 1.0;
+    std::string symbol = named ? unitSymbol(*names[k]) : "";
+    symbol.resize(3, ' ');
+    d->unitNames += symbol;
+  }
   return d;
 }
-
-}  // namespace
 
 bool bindUserRoutine(const Model& model, const language::Statement& s, const language::Argument& fn,
                      user::RoutineKind kind, user::ElementData element,
@@ -42,7 +51,7 @@ bool bindUserRoutine(const Model& model, const language::Statement& s, const lan
   element.subject = s.subject();
   element.id = s.id ? *s.id : 0;
   element.par = call->arguments;
-  element.data = modelData(model);
+  element.data = userModelData(model);
   std::string error;
   const user::RoutineName name = elementRoutineName(s, routineArgument);
   std::shared_ptr<user::ElementRoutine> routine =
@@ -69,6 +78,37 @@ bool bindUserRoutine(const Model& model, const language::Statement& s, const lan
     if (!ok) break;  // the same measures fail for every output: report them once
   }
   return ok;
+}
+
+bool bindUserField(const Model& model, const language::Statement& s, LinearField& f,
+                   Diagnostics& diags) {
+  // FUNCTION=USER replaces the matrices: ADAMS's FIELD takes one or the other.
+  bool ok = true;
+  for (const char* name : {"KMATRIX", "CMATRIX", "CRATIO", "LENGTH", "FORCE"})
+    if (const language::Argument* a = s.find(name)) {
+      diags.error(a->where, s.subject(),
+                  std::string(name) + " with FUNCTION=USER(...): FIESUB gives the whole load",
+                  std::string("Remove ") + name + ", or FUNCTION to use the matrices.");
+      ok = false;
+    }
+  const auto par = userParameters(s, diags);
+  if (!par || !ok) return false;
+  user::ElementData e;
+  e.subject = s.subject();
+  e.id = s.id ? *s.id : 0;
+  e.par = *par;
+  e.i = model.markers[static_cast<size_t>(f.iMarker)].id;
+  e.j = model.markers[static_cast<size_t>(f.jMarker)].id;
+  e.data = userModelData(model);
+  std::string error;
+  f.user = user::loadFieldRoutine(e, elementRoutineName(s), userLibraryDirectory(model), error);
+  if (!f.user) {
+    diags.error(s.find("FUNCTION")->where, s.subject(), error,
+                "Supply the library that defines FIESUB (ROUTINE=lib::name on the statement, or "
+                "openmss run --user-library LIB); docs/user-subroutines.md says how to build one.");
+    return false;
+  }
+  return true;
 }
 
 }  // namespace openmss::model

@@ -4,6 +4,7 @@
 // default library and name), runs its dependency pass, and binds each output the element uses
 // as an expression over the measures the subroutine declared (docs/user-subroutines.md).
 
+#include <memory>
 #include <vector>
 
 #include "common/diagnostics.hpp"
@@ -32,5 +33,12 @@ bool bindUserRoutine(const Model& model, const language::Statement& s, const lan
                      const std::vector<BoundExpression*>& outputs, bool forForces,
                      Diagnostics& diags, bool forRequest = false,
                      const char* routineArgument = "ROUTINE");
+
+// What GTARAY, GTSTRG, GTCURV, AKISPL and CUBSPL read from a user routine of this model.
+std::shared_ptr<const user::ModelData> userModelData(const Model& model);
+
+// FIELD/id, FUNCTION=USER(...): loads FIESUB into f.user. False with located diagnostics.
+bool bindUserField(const Model& model, const language::Statement& s, model::LinearField& f,
+                   Diagnostics& diags);
 
 }  // namespace openmss::model

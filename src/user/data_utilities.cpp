@@ -1,10 +1,12 @@
 // Data-access utilities user routines call: AKISPL, CUBSPL (SPLINE), GTCURV (CURVE), GTARAY
-// (ARRAY), GTSTRG (STRING), in C (c_akispl, ...) and under their gfortran names. They read the
-// model of the routine that is running (element_call.hpp); outside a routine, or for an id the
-// model lacks, the error flag is set. The interpolation is the expression functions' own
-// (common/spline.hpp, common/bspline_curve.hpp), so a routine and an expression agree.
+// (ARRAY), GTSTRG (STRING), GTUNTS (UNITS), GETMOD and GETINM (the analysis mode), in C (c_akispl,
+// ...) and under their gfortran names. They read the model of the routine that is running
+// (element_call.hpp); outside a routine, or for an id the model lacks, the error flag is set. The
+// interpolation is the expression functions' own (common/spline.hpp, common/bspline_curve.hpp), so
+// a routine and an expression agree.
 
 #include <algorithm>
+#include <cmath>
 #include <cstddef>
 #include <cstring>
 #include <string>
@@ -91,7 +93,44 @@ void c_gtstrg(int id, char* string, int* nchars, int* istat) {
   *istat = 0;
 }
 
+// GTUNTS: exists, the SI value of one time, length, force and mass unit, and their symbols (3
+// characters each, blank-padded, 12 in all; C: NUL-terminated, so 13 bytes). ADAMS's layout is
+// not public (docs/user-subroutines.md gives OpenMSS's).
+void c_gtunts(int* exists, double* scales, char* units) {
+  const openmss::user::ModelData* m = d::elementModelData();
+  *exists = m && m->unitsGiven ? 1 : 0;
+  for (int k = 0; k < 4; ++k) scales[k] = m ? m->unitScales[static_cast<std::size_t>(k)] : 1.0;
+  const std::string names = m ? m->unitNames : std::string(12, ' ');
+  std::memcpy(units, names.c_str(), names.size() + 1);
+}
+
+// GETMOD: MODE, the analysis code (1 kinematics, 3 initial conditions, 4 dynamics, 5 statics,
+// 6 quasi-statics, 7 linear), read like SYSFNC("MODE"): declare it in the dependency pass.
+// 0 outside an evaluation subroutine.
+void c_getmod(int* mode) {
+  double m = 0.0;
+  d::elementMode(&m);
+  *mode = static_cast<int>(std::lround(m));
+}
+
+// GETINM: 1 during the initial-conditions analysis (MODE 3), else 0 (OpenMSS's reading of the
+// name; ADAMS's text is not public).
+void c_getinm(int* mode) {
+  int m = 0;
+  c_getmod(&m);
+  *mode = m == 3 ? 1 : 0;
+}
+
 // ---- gfortran names ----------------------------------------------------------------------
+
+void gtunts_(int* exists, double* scales, char* units, std::size_t lunits) {
+  char text[13];
+  c_gtunts(exists, scales, text);
+  std::memset(units, ' ', lunits);
+  std::memcpy(units, text, std::min<std::size_t>(lunits, 12));
+}
+void getmod_(int* mode) { c_getmod(mode); }
+void getinm_(int* mode) { c_getinm(mode); }
 
 void akispl_(const double* xval, const double* zval, const int* id, const int* iord, double* array,
              int* errflg) {

@@ -15,11 +15,13 @@ void anchorUtilitySubroutines();
 void anchorMathUtilities();
 void anchorDataUtilities();
 void anchorConversionUtilities();
+void anchorSplineReader();
 inline void anchorUtilities() {
   anchorUtilitySubroutines();
   anchorMathUtilities();
   anchorDataUtilities();
   anchorConversionUtilities();
+  anchorSplineReader();
 }
 
 // The model data of the running routine's model (null: none, or no routine running).
@@ -35,6 +37,9 @@ bool elementSysary(const std::string& name, const int* ipar, int nsize, double* 
 bool elementSyspar(const std::string& name, const int* ipar, int nsize, const double* partials,
                    int npartl);
 bool elementNeedsPartials();
+// MODE (the analysis code of docs/expressions.md) for GETMOD and GETINM: recorded as a measure
+// in the dependency pass like a SYSFNC call (0 there). False outside an evaluation subroutine.
+bool elementMode(double* mode);
 double elementTime();
 // ERRMES with a stopping end flag (or any other fatal condition) in the running routine.
 void elementFatal(const std::string& text);

@@ -8,10 +8,11 @@
 #include <limits>
 #include <mutex>
 
-#include "common/ascii_case.hpp"
 #include "user/element_call.hpp"
 #include "user/openmss_usersub.h"
+#include "user/plain_routine.hpp"
 #include "user/routine_guard.hpp"
+#include "user/routine_symbol.hpp"
 #include "user/sysary_names.hpp"
 
 namespace openmss::user {
@@ -48,15 +49,6 @@ KindInfo info(RoutineKind k) {
       return {"SEVSUB", 1, false};
   }
   return {"?", 1, true};
-}
-
-// ADAMS tells a C-style routine by its mixed-case name: first letter upper case, no other
-// upper-case letter (docs/user-subroutines.md, "Loading").
-bool mixedCase(const std::string& n) {
-  if (n.empty() || !std::isupper(static_cast<unsigned char>(n[0]))) return false;
-  for (size_t k = 1; k < n.size(); ++k)
-    if (std::isupper(static_cast<unsigned char>(n[k]))) return false;
-  return true;
 }
 
 // FORTRAN-77 argument lists (gfortran: everything by reference, LOGICAL as a 4-byte int).
@@ -424,51 +416,13 @@ std::shared_ptr<ElementRoutine> loadElementRoutine(RoutineKind kind, const Eleme
                                                    const RoutineName& routine,
                                                    const std::string& baseDirectory,
                                                    std::string& error) {
-  const std::string adamsName = info(kind).name;
-  const std::string libName = routine.library.empty() ? defaultLibrary() : routine.library;
-  if (libName.empty()) {
-    error = "FUNCTION=USER(...) needs the user subroutine " + adamsName +
-            (routine.name.empty() ? "" : " (" + routine.name + ")") +
-            ", and no user library is named: the statement has no ROUTINE=lib::name and no "
-            "default library was given (openmss run --user-library LIB)";
-    return nullptr;
-  }
-  std::string why;
-  detail::anchorUtilities();
-  std::shared_ptr<Library> lib = Library::open(libName, baseDirectory, why);
-  if (!lib) {
-    error = "cannot load the user library " + libName + " for " + adamsName +
-            (routine.name.empty() ? "" : " (" + routine.name + ")") + ": " + why;
-    return nullptr;
-  }
+  ResolvedRoutine resolved;
+  if (!resolveRoutine(info(kind).name, routine, baseDirectory, resolved, error)) return nullptr;
   auto r = std::make_shared<Routine>(kind, element);
-  r->library = lib;
-  // Symbols tried, in order, with the convention each implies (docs/user-subroutines.md).
-  std::vector<std::pair<std::string, bool>> tried;  // (symbol, fortran)
-  if (routine.name.empty()) {
-    const std::string c = adamsName.substr(0, 1) + toLowerAscii(adamsName.substr(1));
-    tried = {{c, false},
-             {toLowerAscii(adamsName) + "_", true},
-             {adamsName, true},
-             {toLowerAscii(adamsName), true}};
-  } else {
-    const std::string& n = routine.name;
-    tried = {{n, !mixedCase(n)}, {toLowerAscii(n) + "_", true}, {toUpperAscii(n), true}};
-  }
-  for (const auto& [name, fortran] : tried)
-    if (void* p = lib->symbol(name)) {
-      r->address = p;
-      r->fortran = fortran;
-      r->symbolName = name;
-      break;
-    }
-  if (!r->address) {
-    std::string list;
-    for (const auto& t : tried) list += (list.empty() ? "" : ", ") + t.first;
-    error = "the user library " + lib->path() + " exports no " + adamsName +
-            " routine (looked for " + list + ")";
-    return nullptr;
-  }
+  r->library = resolved.library;
+  r->address = resolved.address;
+  r->fortran = resolved.fortran;
+  r->symbolName = resolved.symbol;
   installCrashGuard();
   const std::string fatal = r->dependencyPass();
   if (!fatal.empty()) {
@@ -482,21 +436,46 @@ std::shared_ptr<ElementRoutine> loadElementRoutine(RoutineKind kind, const Eleme
 
 namespace detail {
 
-bool elementCallActive() { return current != nullptr; }
+// An evaluation subroutine (current) or a routine with explicit arguments (plainCurrent).
+bool elementCallActive() { return current != nullptr || plainCurrent() != nullptr; }
 
 const ModelData* elementModelData() {
-  return current ? current->routine->element().data.get() : nullptr;
+  if (current) return current->routine->element().data.get();
+  return plainCurrent() ? plainCurrent()->data() : nullptr;
 }
 
 bool elementNeedsPartials() { return current && current->needsPartials; }
 
-double elementTime() { return current ? current->time : 0.0; }
+double elementTime() { return current ? current->time : plainTime(); }
 
-std::string elementWho() { return current ? current->routine->who() : std::string(); }
+std::string elementWho() {
+  if (current) return current->routine->who();
+  return plainCurrent() ? plainCurrent()->who() : std::string();
+}
 
 void elementFatal(const std::string& text) {
-  if (current) current->routine->fatal(text, current->time);
+  if (current)
+    current->routine->fatal(text, current->time);
+  else if (plainCurrent())
+    plainCurrent()->fatal(text, plainTime());
 }
+
+void recordProcessFatal(const std::string& text) {
+  std::lock_guard<std::mutex> lock(fatalMutex);
+  if (processFatal().empty()) processFatal() = text;
+}
+
+namespace {
+// SYSFNC/SYSARY from a routine whose inputs are passed explicitly (ADAMS allows them only in
+// the evaluation subroutines, docs/user-subroutines.md): stops it, naming the utility.
+bool refusedInPlain(const char* utility) {
+  if (!plainCurrent()) return false;
+  plainCurrent()->fatal(
+      std::string(utility) + " may not be called from this routine: its inputs are its arguments",
+      plainTime());
+  return true;
+}
+}  // namespace
 
 namespace {
 bool measures(const std::string& name, const int* ipar, int nsize, bool array,
@@ -524,9 +503,24 @@ bool measures(const std::string& name, const int* ipar, int nsize, bool array,
 }
 }  // namespace
 
+bool elementMode(double* mode) {
+  *mode = 0.0;
+  if (!current) return false;
+  const int k = current->routine->measure(HostCall{"MODE", {}, 0});
+  if (k < 0) {
+    elementFatal(
+        "GETMOD/GETINM read MODE, which the routine did not read in its dependency pass "
+        "(IFLAG = 1 or 3); make the same calls when IFLAG is set");
+    return false;
+  }
+  if (!current->recording) *mode = current->host[k];
+  return true;
+}
+
 bool elementSysfnc(const std::string& name, const int* ipar, int nsize, double* value) {
   std::vector<int> index;
   *value = 0.0;
+  if (refusedInPlain("SYSFNC")) return false;
   if (!current || !measures(name, ipar, nsize, false, index)) return false;
   if (!current->recording) *value = current->host[index[0]];
   return true;
@@ -536,6 +530,7 @@ bool elementSysary(const std::string& name, const int* ipar, int nsize, double* 
                    int* count) {
   std::vector<int> index;
   *count = 0;
+  if (refusedInPlain("SYSARY")) return false;
   if (!current || !measures(name, ipar, nsize, true, index)) return false;
   for (size_t k = 0; k < index.size(); ++k)
     values[k] = current->recording ? 0.0 : current->host[index[k]];

@@ -44,6 +44,11 @@ struct ModelData {
   std::map<long, std::shared_ptr<const BSplineCurve>> curves;
   std::map<long, std::vector<double>> arrays;  // IC and constant ARRAYs (values fixed)
   std::map<long, std::string> strings;
+  // GTUNTS: whether a UNITS statement was read; SI value of the model's time, length, force
+  // and mass units; their symbols, 3 characters each, blank-padded, in that order.
+  bool unitsGiven = false;
+  std::array<double, 4> unitScales{1.0, 1.0, 1.0, 1.0};
+  std::string unitNames;
 };
 
 // The statement's data the routine's element struct carries (fields a kind does not use stay

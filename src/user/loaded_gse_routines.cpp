@@ -9,6 +9,7 @@
 #include "common/ascii_case.hpp"
 #include "user/element_call.hpp"
 #include "user/gse_call.hpp"
+#include "user/old_gse_routines.hpp"
 #include "user/openmss_usersub.h"
 
 namespace openmss::user {
@@ -167,6 +168,12 @@ std::shared_ptr<const GseRoutines> loadGseRoutines(const GseDescription& descrip
                                                    const std::string& baseDirectory,
                                                    std::vector<std::string>& errors) {
   detail::anchorUtilities();
+  // The old interface (GSESUB, GSEXX, ...) when ROUTINE names a library, or the default one,
+  // that has GSESUB and none of the new routines (docs/user-subroutines.md).
+  if (names.deriv.name.empty() && names.output.name.empty() &&
+      names.deriv.library == names.output.library &&
+      prefersOldGseInterface(names.deriv.library, baseDirectory))
+    return loadOldGseRoutines(description, names.deriv.library, baseDirectory, errors);
   auto gse = std::make_shared<LoadedGse>(description);
   const size_t errorsBefore = errors.size();
   std::vector<std::pair<std::string, std::shared_ptr<Library>>> opened;

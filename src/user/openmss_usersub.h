@@ -177,6 +177,63 @@ typedef void adams_c_Sensub(const struct sAdamsSensor* sensor, double time, int 
 typedef void adams_c_Sevsub(const struct sAdamsSensor* sensor, double time, int iflag,
                             double* output);
 
+/* FIELD with FUNCTION=USER: disp and velo are I's displacement (x, y, z, AX, AY, AZ) and
+ * velocity relative to J in J's axes; field the force and torque on I in J's axes; dfddis and
+ * dfdvel (wanted when dflag is nonzero) the 6x6 partials, column-major: d field(r) / d disp(c)
+ * at dfddis[r + 6c], as the FORTRAN DFDDIS(6,6) holds them. */
+struct sAdamsField {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int I;
+  int J;
+};
+typedef void adams_c_Fiesub(const struct sAdamsField* field, double time, double* disp,
+                            double* velo, int dflag, int iflag, double* result, double* dfddis,
+                            double* dfdvel);
+
+/* CURVE with FUNCTION=USER: values = x, y, z of the curve at alpha (iord 0) or their iord-th
+ * derivative in alpha (1, 2). */
+struct sAdamsCurve {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int CLOSED;
+  int ORDER;
+  double MINPAR;
+  double MAXPAR;
+};
+typedef void adams_c_Cursub(const struct sAdamsCurve* curve, double alpha, int iord, int iflag,
+                            double* values);
+
+/* COUPLER with FUNCTION=USER: disp holds the coupled joints' displacements (TYPE[k] 'T' or
+ * 'R'); Cousub returns phi (the constraint phi = 0), Couxx d phi / d disp (NJOINT values),
+ * Couxx2 the second partials (NJOINT x NJOINT, column-major). */
+struct sAdamsCoupler {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int NJOINT;
+  int JOINTS[3];
+  char TYPE[3];
+};
+typedef void adams_c_Cousub(const struct sAdamsCoupler* coupler, double time, double* disp,
+                            int iflag, double* phi);
+typedef void adams_c_Couxx(const struct sAdamsCoupler* coupler, double time, double* disp,
+                           int iflag, double* dfda);
+typedef void adams_c_Couxx2(const struct sAdamsCoupler* coupler, double time, double* disp,
+                            int iflag, double* d2fda2);
+
+/* SPLINE/id, FILE=..., BLOCK=...: the reader stores the data with c_put_spline. */
+struct sAdamsSpline {
+  int ID;
+  const char* FILENAME;
+  const char* BLOCKNAME;
+};
+typedef void adams_c_Spline_read(const struct sAdamsSpline* spline, int* ierr);
+void c_put_spline(int id, int nxvals, int nzvals, const double* xvals, const double* yvals,
+                  const double* zvals, int* errflg);
+
 /* General functions: the iord-th derivative (0, 1, 2) in x of the expression function of the
  * same name; *errflg nonzero on a bad argument. IMPACT and BISTOP return in vec[0] the force,
  * vec[1] its partial in x and vec[2] its partial in dxdt (iord is ignored). */
@@ -226,6 +283,15 @@ void c_analys(const char* antype, const char* cid, double timbeg, double timend,
               int* istat);
 void c_datout(int* istat);
 void c_modify(const char* comand, int* istat);
+/* The model's UNITS: *exists nonzero when a UNITS statement was given; scales[4] the SI value
+ * of one time, length, force and mass unit; units (13 bytes) their symbols, 3 characters each,
+ * blank-padded, NUL-terminated (SYSTEM=NONE: scales 1, blanks). */
+void c_gtunts(int* exists, double* scales, char* units);
+/* The analysis mode (1 kinematics, 3 initial conditions, 4 dynamics, 5 statics, 6 quasi-statics,
+ * 7 linear), read like SYSFNC("MODE"): call it in the dependency pass too. GETINM: 1 during the
+ * initial-conditions analysis, else 0. */
+void c_getmod(int* mode);
+void c_getinm(int* mode);
 /* Deterministic CPU time: always 0 (OpenMSS outputs are bit-identical run to run). */
 void c_getcpu(double* cpu);
 
