@@ -49,6 +49,7 @@ Outcome study(const std::string& name, const std::vector<std::string>& acf) {
   options.outputDirectory = dir.string();
   options.echoDiagnostics = false;
   options.printInformation = false;
+  // The session's scope: its end closes the files.
   {
     commands::Session session(options);
     EXPECT_TRUE(session.loadModel((dir / "m.adm").string(), "m"));
@@ -60,7 +61,7 @@ Outcome study(const std::string& name, const std::vector<std::string>& acf) {
     for (const auto& d : session.diagnostics().all())
       if (d.severity == Severity::Error) o.errors.push_back(format(d));
     o.z = session.state()->y(session.system()->layout().body(0) + 2);
-  }  // closes the files
+  }
   if (!fs::exists(dir / "m.req")) return o;  // no output step was written
   std::string why;
   auto req = output::readRequestFile((dir / "m.req").string(), &why);
