@@ -45,6 +45,11 @@ struct RunState {
   std::string outputPrefix;
   // A SENSOR with HALT ended the last transient: the run is over.
   bool halted = false;
+  // The expression run state was taken over from the model before a reprocessing (ACTIVATE,
+  // DEACTIVATE, a redefinition; commands/state_carry_over.hpp): the next transient solves the
+  // initial conditions again but keeps the turn counts and DELAY histories (docs/theory.md
+  // §11c) instead of starting a new run's history.
+  bool historyCarried = false;
   std::unique_ptr<mechanics::ExpressionRunState> expressions;
   RunSummary summary;
 };

@@ -148,6 +148,30 @@ class Reader {
   int line_ = 0;
 };
 
+std::string toHex(const std::string& bytes) {
+  static const char* digits = "0123456789abcdef";
+  std::string out;
+  for (const unsigned char c : bytes) {
+    out += digits[c >> 4];
+    out += digits[c & 15];
+  }
+  return out;
+}
+
+std::string fromHex(Reader& r, const std::string& hex) {
+  const auto value = [&](char c) {
+    if (c >= '0' && c <= '9') return c - '0';
+    if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+    r.fail("user-data holds a character that is not a hexadecimal digit");
+    return 0;
+  };
+  if (hex.size() % 2 != 0) r.fail("user-data has an odd number of hexadecimal digits");
+  std::string out;
+  for (std::size_t k = 0; k < hex.size(); k += 2)
+    out += static_cast<char>(value(hex[k]) * 16 + value(hex[k + 1]));
+  return out;
+}
+
 void readBody(Reader& r, SaveFile& f) {
   const auto kind = r.fields("kind", 1);
   if (kind[0] != "STATES" && kind[0] != "SYSTEM") r.fail("unknown kind " + kind[0]);
@@ -196,6 +220,7 @@ void readBody(Reader& r, SaveFile& f) {
     f.commands.resize(r.count(r.fields("commands", 1)[0]));
     for (auto& c : f.commands) c = r.text("command");
   }
+  f.userData = fromHex(r, r.text("user-data"));
   r.fields("end", 0);
 }
 
@@ -327,6 +352,7 @@ std::string encodeSaveFile(const SaveFile& f) {
     w.line("commands " + std::to_string(f.commands.size()));
     for (const auto& c : f.commands) w.text("command", c);
   }
+  w.text("user-data", toHex(f.userData));  // SAVSUB's bytes, two hexadecimal digits each
   w.line("end");
   w.line("checksum " + hex64(fnv1a(w.out())));
   return w.out();

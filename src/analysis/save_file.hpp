@@ -18,7 +18,7 @@
 
 namespace openmss::analysis {
 
-inline constexpr int kSaveFormatVersion = 2;  // 2: curve-parameters
+inline constexpr int kSaveFormatVersion = 3;  // 2: curve-parameters; 3: user-data
 
 // The build identity written into and required of save files: numbers of another build may
 // differ in the last bit, so continuation could not be promised bit-identical.
@@ -38,6 +38,8 @@ struct SaveFile {
   // changed the model or its settings since it was loaded, as written, in order.
   std::string datasetPath, datasetText;
   std::vector<std::string> commands;
+  // What the user library's SAVSUB wrote (user/save_routines.hpp), for RELSUB; "" when none.
+  std::string userData;
 };
 
 // 16 hexadecimal digits identifying the structure of the model the run state belongs to: the

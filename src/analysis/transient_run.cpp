@@ -56,7 +56,10 @@ bool beginTransient(const AnalysisContext& run, bool kinematic) {
     run.state.expressions->status().clearIntegrator();
   };
   if (!s.initialized) {
-    s.expressions->reset();  // a new run: no turns counted, no DELAY history
+    // A new run: no turns counted, no DELAY history; after a reprocessing the history
+    // carried over from the model before continues (docs/theory.md §11c).
+    if (!s.historyCarried) s.expressions->reset();
+    s.historyCarried = false;
     if (!solveInitialConditions(run)) return false;
     s.expressions->accept(run.system, s.t, s.y, s.yp);
     enterAnalysisMode();

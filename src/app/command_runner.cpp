@@ -123,11 +123,13 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
       return RunOutcome::InputError;
     }
     modelLoaded_ = session_.loadModel(model.string(), prefix);
-    if (!modelLoaded_) {
+    if (!modelLoaded_ && !keepGoing_) {
       std::fprintf(stderr, "openmss: the model %s has errors; nothing was simulated\n",
                    model.string().c_str());
       return RunOutcome::InputError;
     }
+    // `openmss check`: the commands are checked against the data set as written as well, so
+    // that one pass reports the errors of both files (Session::checkWithoutSystem).
   }
   ++commandFileDepth_;
   const auto lines = fileLines(path);
@@ -146,6 +148,7 @@ RunOutcome CommandRunner::runCommandFile(const std::string& path) {
     if (session_.stopped()) break;
   }
   --commandFileDepth_;
+  if (!cf.modelFile.empty() && !modelLoaded_) return RunOutcome::InputError;
   return outcome;
 }
 

@@ -32,11 +32,7 @@ void Session::inform(const std::string& text, bool messageFile) {
 }
 
 bool Session::informationCommand(const language::Statement& c) {
-  if (c.name == "CONTROL") {
-    error(c, "CONTROL passes control to a user CONSUB subroutine; CONSUB not supported yet",
-          "Write the control sequence as commands in the .acf instead.");
-    return false;
-  }
+  if (c.name == "CONTROL") return control(c);  // control_command.cpp
   if (c.name == "INFO") return info(c);
   if (c.name == "SHOW" || c.name == "TIME") return show(c);
   if (c.name == "MENU") {

@@ -20,6 +20,7 @@
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
 #include "output/request_header.hpp"
+#include "user/save_routines.hpp"
 
 namespace openmss::commands {
 namespace {
@@ -34,8 +35,9 @@ std::string argumentWord(const language::Statement& c, const char* name) {
 
 // Commands that change neither the model nor its settings: not replayed by RELOAD/SYSTEM.
 bool changesModel(const std::string& name) {
+  // CONTROL: its CONSUB's MODIFY commands are recorded one by one.
   for (const char* n : {"SIMULATE", "LINEAR", "SAVE", "RELOAD", "STOP", "HELP", "INFO", "SHOW",
-                        "TIME", "MENU", "FILE"})
+                        "TIME", "MENU", "FILE", "CONTROL"})
     if (name == n) return false;
   return true;
 }
@@ -50,7 +52,17 @@ bool sameRequestDirectory(const model::Model& a, const model::Model& b) {
   return true;
 }
 
+// Relative FILE= names are taken in the output directory, next to <prefix>.req.
+std::string saveFilePath(const std::string& written, const std::string& outputDirectory) {
+  const fs::path p = written;
+  return p.is_absolute() ? p.string() : (fs::path(outputDirectory) / p).string();
+}
+
 }  // namespace
+
+std::string Session::modelDirectory() const {
+  return model_ ? fs::path(model_->file).parent_path().string() : std::string(".");
+}
 
 std::string readTextFile(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
@@ -86,13 +98,9 @@ bool Session::saveOrReload(const language::Statement& c) {
     diagnostic(d);
     return false;
   }
+  if (options_.checkOnly)  // no file written, no state restored
+    return checkSaveOrReload(c, saveFilePath(argumentWord(c, "FILE"), options_.outputDirectory));
   return c.name == "SAVE" ? save(c) : reload(c);
-}
-
-// Relative FILE= names are taken in the output directory, next to <prefix>.req.
-static std::string saveFilePath(const std::string& written, const std::string& outputDirectory) {
-  const fs::path p = written;
-  return p.is_absolute() ? p.string() : (fs::path(outputDirectory) / p).string();
 }
 
 bool Session::save(const language::Statement& c) {
@@ -104,6 +112,14 @@ bool Session::save(const language::Statement& c) {
     f.datasetText = datasetText_;
     f.commands = commandHistory_;
   }
+  // The user library's own data (user/save_routines.hpp).
+  const user::UserSaveData own = user::callSavsub(modelDirectory());
+  if (!own.error.empty()) {
+    error(c, "SAVSUB failed, nothing was saved: " + own.error,
+          "Fix the user library's Savsub (docs/user-subroutines.md, \"SAVSUB and RELSUB\").");
+    return false;
+  }
+  f.userData = own.bytes;
   const std::string bytes = analysis::encodeSaveFile(f);
   // Written beside the target and renamed: a failed SAVE never leaves half a file under it.
   const std::string partial = path + ".partial";
@@ -157,6 +173,13 @@ bool Session::reload(const language::Statement& c) {
   if (c.has("OUTPUT_PREFIX") && !switchOutputPrefix(c)) return false;
   msg_.line(" " + std::string(c.has("SYSTEM") ? "System" : "States") + " reloaded from " + path +
             ": time " + analysis::formatNumber("%.6E", state_->t));
+  // The user library's own data, after the states (user/save_routines.hpp).
+  const user::UserSaveData own = user::callRelsub(file->userData, modelDirectory());
+  if (!own.error.empty()) {
+    error(c, "RELSUB failed: " + own.error + "; the states are reloaded",
+          "Fix the user library's Relsub (docs/user-subroutines.md, \"SAVSUB and RELSUB\").");
+    return false;
+  }
   return true;
 }
 

@@ -165,9 +165,15 @@ bool Session::dispatch(const language::Statement& c) {
     return true;
   }
   if (!system_) {
+    // `openmss check` of a data set with errors: the commands are checked all the same.
+    if (options_.checkOnly && model_) return checkWithoutSystem(c);
     error(c, "no model is loaded", "Load a data set first (line 1 of the .acf, or FILE/MODEL=).");
     return false;
   }
+  return dispatchChecked(c);
+}
+
+bool Session::dispatchChecked(const language::Statement& c) {
   if (c.name == "SIMULATE") return simulate(c);
   if (c.name == "INTEGRATOR" || c.name == "GSTIFF" || c.name == "WSTIFF" || c.name == "DSTIFF")
     return setIntegrator(c);
@@ -251,11 +257,12 @@ bool Session::openRequests() {
 }
 
 void Session::writeRequests(double t, const std::vector<std::array<double, 6>>& rows) {
+  if (outputSuppressed_) return;  // CONSUB's ANALYS: DATOUT writes (control_command.cpp)
   req_.writeStep(t, rows);
 }
 
 bool Session::wantsFrames() const {
-  return model_ && !options_.checkOnly &&
+  return model_ && !options_.checkOnly && !outputSuppressed_ &&
          ((results_.enabled && !resFailed_) || (model_->output.grsave && !graFailed_));
 }
 
@@ -326,8 +333,8 @@ bool Session::writeFormattedResults(const analysis::OutputFrame& frame) {
 }
 
 bool Session::wantsTabular() const {
-  return model_ && !options_.checkOnly && !model_->requests.empty() && !results_.noPrint &&
-         !outFailed_;
+  return model_ && !options_.checkOnly && !outputSuppressed_ && !model_->requests.empty() &&
+         !results_.noPrint && !outFailed_;
 }
 
 bool Session::writeTabular(const analysis::OutputFrame& frame) {

@@ -84,12 +84,21 @@ class Session final : private analysis::RunReport {
  private:
   analysis::AnalysisContext context();
   bool dispatch(const language::Statement& command);
+  // Every command but STOP, once a model is there (or, in check mode, its data set).
+  bool dispatchChecked(const language::Statement& command);
+  // Check mode with a data set that has errors (check_commands.cpp): no system, the commands
+  // are checked against the data set; checkTime_ is the time SIMULATEs so far reach.
+  bool checkWithoutSystem(const language::Statement& command);
+  bool checkSaveOrReload(const language::Statement& command, const std::string& path);
+  double checkTime_ = 0.0;
+  std::set<std::string> checkSaved_;  // save files named by SAVE in check mode
   // SAVE/STATES, SAVE/SYSTEM, RELOAD/STATES, RELOAD/SYSTEM (save_reload_command.cpp).
   bool saveOrReload(const language::Statement& command);
   bool save(const language::Statement& command);
   bool reload(const language::Statement& command);
   bool reloadSystem(const language::Statement& command, const analysis::SaveFile& file);
   bool switchOutputPrefix(const language::Statement& command);
+  std::string modelDirectory() const;  // where ROUTINE= and user libraries are looked for
   void recordCommand(const language::Statement& command, const std::vector<std::string>& echo);
   bool simulate(const language::Statement& command);
   bool linear(const language::Statement& command);
@@ -115,6 +124,13 @@ class Session final : private analysis::RunReport {
   static bool isInformationCommand(const std::string& name);
   bool informationCommand(const language::Statement& command);
   bool info(const language::Statement& command);
+  // CONTROL and the utilities of its CONSUB (control_command.cpp); each utility returns istat.
+  bool control(const language::Statement& command);
+  int controlAnalys(const language::Statement& command, const std::string& antype,
+                    const std::string& cid, double timbeg, double timend, bool init);
+  int controlDatout(const language::Statement& command);
+  int controlModify(const language::Statement& command, const std::string& text);
+  bool outputSuppressed_ = false;  // an ANALYS of CONSUB runs: no output step is written
   bool show(const language::Statement& command);
   bool preferences(const language::Statement& command);
   void inform(const std::string& text, bool messageFile = true);

@@ -114,6 +114,9 @@ void carryOverState(const mechanics::MultibodySystem& fromSystem, const analysis
               toSystem.layout().body(b));
   }
   carryUserStates(fromSystem, from.y, toSystem, to.y);
+  // Turn counts, DELAY histories, SENVAL, GSE samples of the elements that remain (§11c).
+  to.expressions->carryFrom(*from.expressions, fromSystem, toSystem);
+  to.historyCarried = true;
 }
 
 }  // namespace openmss::commands

@@ -3,7 +3,9 @@
 // command the model is built again (model_edits.hpp) and the next analysis starts from the
 // last state of the old one, as ADAMS does (docs/commands.md, "Reprocessing"): the time, the
 // pose and velocity of every moving part, and the values of the user states (VARIABLE, DIFF,
-// LSE/TFSISO, GSE) that both models have. The initial conditions are solved again.
+// LSE/TFSISO, GSE) that both models have, and the expression history of the elements that
+// remain (turn counts, DELAY histories, SENVAL; docs/theory.md §11c). The initial conditions
+// are solved again.
 
 #include "analysis/run_state.hpp"
 #include "mechanics/multibody_system.hpp"

@@ -54,7 +54,9 @@ std::vector<StatementSpec> finalCommandTable() {
                     "ACCGRAV", "BEAM", "BUSHING", "FIELD", "GFORCE", "SFORCE", "SPRINGDAMPER",
                     "VFORCE", "VTORQUE", "ARRAY", "SPLINE", "STRING", "VARIABLE", "DIFF",
                     "SENSOR", "REQUEST", "INFO", "SHOW", "TIME", "MENU", "PREFERENCES",
-                    "LSOLVER", "ENVIRONMENT"});
+                    "LSOLVER", "ENVIRONMENT",
+                    // commands/control_command.cpp (a user CONSUB)
+                    "CONTROL"});
   return t;
 }
 

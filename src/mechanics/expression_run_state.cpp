@@ -25,18 +25,26 @@ ExpressionRunState::ExpressionRunState(const model::Model& m)
       // state bound without trackCurveParameters still matches the equations' slots.
       curveParameters_(m.ptcvs.size() + 2 * m.cvcvs.size(),
                        std::numeric_limits<double>::quiet_NaN()) {
-  for (const auto& f : m.sforces) addFunction(f.function);
+  // Each function is named by its element and argument, so that a reprocessed model's run
+  // state can take over the DELAY histories of the functions it keeps (carryFrom).
+  const auto name = [](const char* kind, long id, int part) {
+    return std::string(kind) + "/" + std::to_string(id) + "#" + std::to_string(part);
+  };
+  for (const auto& f : m.sforces) addFunction(f.function, name("SFORCE", f.id, 0));
+  static const char* kVectorKinds[] = {"VFORCE", "VTORQUE", "GFORCE"};
   for (const auto& f : m.vectorForces)
-    for (const auto& c : f.components)
-      if (c) addFunction(*c);
-  for (const auto& v : m.variables) addFunction(v.function);
-  for (const auto& d : m.diffs) addFunction(d.function);
+    for (std::size_t c = 0; c < f.components.size(); ++c)
+      if (f.components[c])
+        addFunction(*f.components[c],
+                    name(kVectorKinds[static_cast<int>(f.kind)], f.id, static_cast<int>(c)));
+  for (const auto& v : m.variables) addFunction(v.function, name("VARIABLE", v.id, 0));
+  for (const auto& d : m.diffs) addFunction(d.function, name("DIFF", d.id, 0));
   for (const auto& r : m.requests)
-    for (const auto& c : r.columns)
-      if (c) addFunction(*c);
+    for (std::size_t c = 0; c < r.columns.size(); ++c)
+      if (r.columns[c]) addFunction(*r.columns[c], name("REQUEST", r.id, static_cast<int>(c)));
   for (const auto& s : m.sensors) {
-    addFunction(s.function);
-    if (s.evaluate) addFunction(*s.evaluate);
+    addFunction(s.function, name("SENSOR", s.id, 0));
+    if (s.evaluate) addFunction(*s.evaluate, name("SENSOR", s.id, 1));
   }
   sensorValues_.assign(m.sensors.size(), 0.0);
   for (const auto& e : m.generalStates) {
@@ -117,7 +125,7 @@ void ExpressionRunState::commitCoupledAngles(const MultibodySystem& system,
   commitCurveParameters(system, t, y);
 }
 
-void ExpressionRunState::addFunction(const model::BoundExpression& f) {
+void ExpressionRunState::addFunction(const model::BoundExpression& f, std::string owner) {
   // One reference per distinct angle: equal calls measure the same function of the state.
   for (const model::Measure& ms : f.measures) {
     if (!isCumulativeAngle(ms.kind)) continue;
@@ -126,7 +134,7 @@ void ExpressionRunState::addFunction(const model::BoundExpression& f) {
     if (!known) angles_.push_back({ms, 0.0, false});
   }
   for (std::size_t k = 0; k < f.expression.delayCount(); ++k)
-    delays_.push_back({&f, k, f.expression.delayKey(k), {}});
+    delays_.push_back({&f, k, f.expression.delayKey(k), {}, owner});
 }
 
 void ExpressionRunState::reset() {

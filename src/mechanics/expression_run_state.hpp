@@ -107,6 +107,15 @@ class ExpressionRunState final : public expr::RunContext {
   Snapshot snapshot() const;
   bool restore(const Snapshot& s);
 
+  // After ACTIVATE, DEACTIVATE or a redefinition (expression_run_carry.cpp; docs/theory.md
+  // §11c): takes over from the run state of the model before, element by element, what the
+  // reprocessed model still has: the cumulative angles of the same markers, the DELAY histories
+  // of functions whose element and text are unchanged, the COUPLER/GEAR committed angles, SENVAL
+  // values, GSE discrete states, FRICTION anchors, PTCV/CVCV parameters and the analysis status.
+  // Returns how many entries were taken over (tests count them).
+  int carryFrom(const ExpressionRunState& from, const MultibodySystem& fromSystem,
+                const MultibodySystem& toSystem);
+
  private:
   struct Angle {
     model::Measure measure;
@@ -118,8 +127,9 @@ class ExpressionRunState final : public expr::RunContext {
     std::size_t call = 0;
     const void* key = nullptr;
     expr::DelayHistory history;
+    std::string owner;  // "VARIABLE/5#0": element and argument (REQUEST column, SENSOR 0/1)
   };
-  void addFunction(const model::BoundExpression& f);
+  void addFunction(const model::BoundExpression& f, std::string owner);
   void commitCurveParameters(const MultibodySystem& system, double t, const Eigen::VectorXd& y);
 
   std::vector<Angle> angles_;

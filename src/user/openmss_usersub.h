@@ -277,8 +277,18 @@ void c_tcnvrt(const char* sys1, const double* coord1, const char* sys2, double* 
               int* istat);
 /* TIMGET's older name: the time of the last converged step. */
 void c_timegt(double* time);
-/* Analysis control, allowed only inside CONSUB (the CONTROL command, not supported yet): they
- * do nothing, print why once, and set *istat = 1. */
+/* CONSUB, the driver of the CONTROL command (CONTROL/FUNCTION=USER(r1, ..., r30)
+ * [, ROUTINE=lib::name]): C style `void Consub(const struct sAdamsControl* con)`, or FORTRAN 77
+ * `SUBROUTINE CONSUB(PAR, NPAR)`. Field order as ADAMS's sAdamsControl. */
+struct sAdamsControl {
+  int NPAR;
+  const double* PAR;
+};
+/* Analysis control, inside CONSUB only (docs/user-subroutines.md, "CONSUB"): ANALYS runs an
+ * analysis ("TRANSIENT", "DYNAMICS", "KINEMATICS", "STATIC"/"STATICS") from timbeg (the current
+ * time) to timend without writing output, init nonzero solving the initial conditions again
+ * first; DATOUT writes one output step at the current state; MODIFY executes one command.
+ * *istat = 0 when done. Outside CONSUB they do nothing, print why once, and set *istat = 1. */
 void c_analys(const char* antype, const char* cid, double timbeg, double timend, int init,
               int* istat);
 void c_datout(int* istat);

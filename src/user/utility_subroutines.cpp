@@ -11,6 +11,7 @@
 #include <string>
 
 #include "common/ascii_case.hpp"
+#include "user/control_routine.hpp"
 #include "user/element_call.hpp"
 #include "user/gse_call.hpp"
 #include "user/openmss_usersub.h"
@@ -52,6 +53,10 @@ void errmes(int errflg, const std::string& message, int id, const std::string& e
     d::elementFatal(text);
     return;
   }
+  if (openmss::user::detail::controlCallActive() && stops(toUpperAscii(endflg))) {
+    openmss::user::detail::controlFatal("CONSUB: " + text);  // control_routine.hpp
+    return;
+  }
   std::fprintf(stderr, "openmss: %s%s%s\n", d::elementCallActive() ? d::elementWho().c_str() : "",
                d::elementCallActive() ? ": " : "", text.c_str());
 }
@@ -72,20 +77,24 @@ void sysary(const std::string& name, const int* ipar, int nsize, double* states,
   *errflg = d::elementCallActive() && d::elementSysary(name, ipar, nsize, states, nstates) ? 0 : 1;
 }
 
-// ANALYS, DATOUT, MODIFY: ADAMS allows them only inside CONSUB (the CONTROL command), which
-// OpenMSS does not run yet; from any other routine they do nothing and fail, saying so once
-// per utility (docs/user-subroutines.md, "Other utilities").
+// ANALYS, DATOUT, MODIFY: ADAMS allows them only inside CONSUB (the CONTROL command; they
+// reach the session through control_routine.hpp); from any other routine, or while an element
+// routine runs inside an analysis CONSUB started, they do nothing and fail, saying so once per
+// utility (docs/user-subroutines.md, "CONSUB").
 void controlOnly(const char* name, int* istat) {
   *istat = 1;
   static thread_local std::string said;
   if (said.find(name) != std::string::npos) return;
   said += name;
   std::fprintf(stderr,
-               "openmss: %s%s%s may be called only from CONSUB (the CONTROL command), which "
-               "OpenMSS does not support yet; it did nothing and returned istat = 1\n",
+               "openmss: %s%s%s may be called only from CONSUB (the CONTROL command); it did "
+               "nothing and returned istat = 1\n",
                d::elementCallActive() ? d::elementWho().c_str() : "",
                d::elementCallActive() ? ": " : "", name);
 }
+
+// CONSUB runs on this thread and no element or GSE routine of an analysis it started does.
+bool inConsub() { return d::controlCallActive() && !d::elementCallActive() && !d::gseCallActive(); }
 
 }  // namespace
 
@@ -133,13 +142,16 @@ void c_timegt(double* time) { c_timget(time); }
 
 void c_analys(const char* antype, const char* cid, double timbeg, double timend, int init,
               int* istat) {
-  (void)antype, (void)cid, (void)timbeg, (void)timend, (void)init;
-  controlOnly("ANALYS", istat);
+  if (!inConsub()) return controlOnly("ANALYS", istat);
+  d::controlAnalys(trimmedUpper(antype), cid ? cid : "", timbeg, timend, init, istat);
 }
-void c_datout(int* istat) { controlOnly("DATOUT", istat); }
+void c_datout(int* istat) {
+  if (!inConsub()) return controlOnly("DATOUT", istat);
+  d::controlDatout(istat);
+}
 void c_modify(const char* comand, int* istat) {
-  (void)comand;
-  controlOnly("MODIFY", istat);
+  if (!inConsub()) return controlOnly("MODIFY", istat);
+  d::controlModify(comand ? comand : "", istat);
 }
 
 void c_errmes(int errflg, const char* mesage, int id, const char* endflg) {
@@ -175,12 +187,17 @@ void adams_needs_partials_(int* eval_jac) { c_adams_needs_partials(eval_jac); }
 void timget_(double* time) { c_timget(time); }
 void timegt_(double* time) { c_timget(time); }
 
-void analys_(const char*, const char*, const double*, const double*, const int*, int* istat,
-             std::size_t, std::size_t) {
-  controlOnly("ANALYS", istat);
+void analys_(const char* antype, const char* cid, const double* timbeg, const double* timend,
+             const int* init, int* istat, std::size_t lantype, std::size_t lcid) {
+  if (!inConsub()) return controlOnly("ANALYS", istat);
+  d::controlAnalys(toUpperAscii(fortranText(antype, lantype)), fortranText(cid, lcid), *timbeg,
+                   *timend, *init, istat);
 }
-void datout_(int* istat) { controlOnly("DATOUT", istat); }
-void modify_(const char*, int* istat, std::size_t) { controlOnly("MODIFY", istat); }
+void datout_(int* istat) { c_datout(istat); }
+void modify_(const char* comand, int* istat, std::size_t lcomand) {
+  if (!inConsub()) return controlOnly("MODIFY", istat);
+  d::controlModify(fortranText(comand, lcomand), istat);
+}
 
 void errmes_(const int* errflg, const char* mesage, const int* id, const char* endflg,
              std::size_t lmesage, std::size_t lendflg) {

@@ -64,14 +64,37 @@ TEST(CheckCommandFile, ReportsEveryErrorOfTheModelAndTheCommands) {
   EXPECT_NE(r.output.find("p.acf:6:"), std::string::npos) << r.output;  // bad expression
   EXPECT_NE(r.output.find("p.acf: 3 error(s)"), std::string::npos) << r.output;
 
-  // A model error is reported too (a MARKER on a missing PART), with the commands unread.
+  // A model error is reported too (a MARKER on a missing PART), and the commands are still
+  // checked against the data set as written: every error of both files in one pass.
   write(dir / "bad.adm",
         std::string(kPendulum).replace(std::string(kPendulum).find("MARKER/21, PART=2"), 17,
                                        "MARKER/21, PART=9"));
-  write(dir / "b.acf", "bad\nb\nSIMULATE/STATICS\nSTOP\n");
+  write(dir / "b.acf",
+        "bad\nb\nSIMULATE/STATICS\nDEACTIVATE/JOINT, ID=7\nSFORCE/1, FUNCTION=1\n"
+        "SIMULATE/DYNAMICS, END=1, STEPS=10\nSIMULATE/DYNAMICS, END=0.5, STEPS=10\n"
+        "MOTION/1, FUNCTION=1+\nSAVE/STATES, FILE=s.sav\nRELOAD/STATES, FILE=s.sav\n"
+        "RELOAD/STATES, FILE=none.sav\nDEACTIVATE/MOTION, ID=1\nSTOP\n");
   const Result b = run("check b.acf", dir);
   EXPECT_EQ(b.status, 1);
-  EXPECT_GE(count(b.output, "bad.adm:"), 1) << b.output;
+  int modelErrors = 0;  // lines "bad.adm:L:C: error: ..."
+  for (size_t p = b.output.find("bad.adm:"); p != std::string::npos;
+       p = b.output.find("bad.adm:", p + 1))
+    modelErrors += b.output.compare(b.output.find(' ', p), 8, " error: ") == 0;
+  EXPECT_EQ(modelErrors, 2) << b.output;  // MARKER/21 on PART/9; PART/2's CM not its marker
+  // Lines 4 (no JOINT/7), 5 (no SFORCE/1), 7 (END before t = 1), 8 (bad expression), 11 (no
+  // save file: the SAVE of line 9 names s.sav, which check mode does not write).
+  for (const char* at : {"b.acf:4:", "b.acf:5:", "b.acf:7:", "b.acf:8:", "b.acf:11:"})
+    EXPECT_EQ(count(b.output, at), 1) << at << "\n" << b.output;
+  EXPECT_EQ(count(b.output, "b.acf:3:") + count(b.output, "b.acf:6:") +
+                count(b.output, "b.acf:9:") + count(b.output, "b.acf:10:") +
+                count(b.output, "b.acf:12:"),
+            0)
+      << b.output;
+  EXPECT_NE(b.output.find("b.acf: " + std::to_string(modelErrors + 5) + " error(s)"),
+            std::string::npos)
+      << b.output;
+  EXPECT_FALSE(fs::exists(dir / "s.sav"));
+  EXPECT_FALSE(fs::exists(dir / "b.msg"));
 
   // A model that does not exist: one error at line 1 of the command file.
   write(dir / "n.acf", "nothere\nn\nSIMULATE/STATICS\nSTOP\n");
@@ -79,6 +102,20 @@ TEST(CheckCommandFile, ReportsEveryErrorOfTheModelAndTheCommands) {
   EXPECT_EQ(n.status, 1);
   EXPECT_NE(n.output.find("n.acf:1:1: error: the data set"), std::string::npos) << n.output;
   EXPECT_NE(n.output.find("n.acf: 1 error(s)"), std::string::npos) << n.output;
+}
+
+// MREQUEST: refused at its line with what to write instead (docs/language.md, "MREQUEST").
+TEST(CheckCommandFile, MrequestIsRefusedAtItsLine) {
+  const fs::path dir = scratch("check-mrequest");
+  std::string adm = kPendulum;
+  adm.replace(adm.find("END\n"), 4, "MREQUEST/1, DISPLACEMENT, PART=2\nEND\n");
+  write(dir / "m.adm", adm);
+  const Result r = run("check m.adm", dir);
+  EXPECT_EQ(r.status, 1);
+  EXPECT_NE(r.output.find("m.adm:12:1: error: MREQUEST/1: MREQUEST is not supported"),
+            std::string::npos)
+      << r.output;
+  EXPECT_NE(r.output.find("REQUEST/id, DISPLACEMENT"), std::string::npos) << r.output;
 }
 
 }  // namespace

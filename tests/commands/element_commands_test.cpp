@@ -353,7 +353,7 @@ TEST(ElementCommands, BadCommandsGiveOneLocatedErrorAndChangeNothing) {
       "JOINT/1, I=22",                   // not changeable by command
       "SFORCE/1, FUNCTION=1+",           // does not parse
       "DEACTIVATE/JOINT",                // nothing named
-      "CONTROL/ ROUTINE=consub",         // no user subroutines yet
+      "CONTROL/ ROUTINE=consub",         // no FUNCTION=USER(...) for CONSUB
   };
   int checked = 0;
   for (const auto& b : bad) {
