@@ -14,11 +14,11 @@ namespace openmss::mechanics::contact {
 
 template <class T>
 struct ContactLoads {
-  V3<T> force;          // on I's part, through iOrigin
-  V3<T> torqueAtI;      // about iOrigin
-  V3<T> torqueAtJ;      // of the reaction -force, about jOrigin
+  V3<T> force;      // on I's part, through iOrigin
+  V3<T> torqueAtI;  // about iOrigin
+  V3<T> torqueAtJ;  // of the reaction -force, about jOrigin
   V3<T> iOrigin, jOrigin;
-  int points = 0;       // contact points found (0: separated)
+  int points = 0;  // contact points found (0: separated)
   double maxDepth = 0.0;
 };
 
@@ -57,7 +57,7 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
     const V3<T> vj = mj.pdot + cross(mj.w, p.point - mj.p);
     const V3<T> vrel = vi - vj;
     const T approach = -dot(vrel, p.normal);  // the rate of the penetration
-    const T fn = normalForce(c, p.depth, approach);
+    const T fn = normalForce(c, p.depth, approach) * p.weight;
     V3<T> f = p.normal * fn;
     if (withFriction) f += frictionForce(c, fn, vrel - p.normal * dot(vrel, p.normal));
     out.force += f;
