@@ -4,6 +4,8 @@
 //   k d^e = m g / 2 (the two rims are the two contact points of the line contact);
 // - a cylinder standing on its flat face, released tilted by 2 degrees, rights itself and
 //   settles at k d^e = m g (the bottom rim's samples share one force);
+// - the rim samples of a tilted face at a given placement against their depths computed here
+//   from the pose (force and moment);
 // - a sphere hitting a cylinder's side: the penetration history against the 1-D IMPACT ODE
 //   integrated here by RK4;
 // - a cylinder rolls down an incline without slip: a = (2/3) g sin(phi);
@@ -16,6 +18,7 @@
 #include <numbers>
 
 #include "contact/contact_support.hpp"
+#include "mechanics/contact/contact_loads.hpp"
 #include "support/built_model.hpp"
 
 namespace openmss::contact_test {
@@ -86,6 +89,47 @@ TEST(ContactFrustum, CylinderOnItsFlatFaceRightsItselfAndSettlesUnderTheWholeWei
               0.2 - last.r.z(), d, std::abs((0.2 - last.r.z()) / d - 1), last.w.norm());
   EXPECT_NEAR(0.2 - last.r.z(), d, 1e-6 * d);
   EXPECT_LT(last.w.norm(), 1e-6);
+}
+
+TEST(ContactFrustum, RimSamplesOfATiltedFaceShareOneForceByDepth) {
+  // Standing cylinder tilted by 2 degrees about x (REULER 0,2D,0), its bottom centre c at
+  // z = -0.001. A rim point at body angle psi is at height zc(psi) = -0.001 + R sin(psi) sin(2
+  // deg): its depth is 0.001 - R sin(2 deg) sin(psi). The samples start at the deepest point
+  // (psi = -90 deg) every 30 degrees; those inside (7 here) carry k d^e d / sum d. The moment
+  // about the I marker (c) is sum R cos(2 deg) sin(psi) F (the forces are vertical).
+  const double tilt = 2.0 * std::numbers::pi / 180.0, radius = 0.1;
+  char qg[96];
+  std::snprintf(qg, sizeof qg, "0,0,%.17g, REULER=0,2D,0", 0.2 * std::cos(tilt) - 0.001);
+  const model::Model m = build(cylinderDeck(
+      qg, "QP=0,0,-0.2", "IMPACT, STIFFNESS=1e5, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ""));
+  mechanics::MultibodySystem s(m);
+  const Eigen::VectorXd y = s.initialState();
+  const auto loads =
+      mechanics::contact::contactLoads<double>(m, s.layout(), m.contacts.at(0), y.data(), false);
+  double depths[12], sum = 0.0;
+  int inside = 0;
+  for (int k = 0; k < 12; ++k) {
+    const double psi = (-90.0 + 30.0 * k) * std::numbers::pi / 180.0;
+    depths[k] = 0.001 - radius * std::sin(tilt) * std::sin(psi);
+    if (depths[k] > 0.0) sum += depths[k], ++inside;
+  }
+  double fz = 0.0, mx = 0.0;
+  for (int k = 0; k < 12; ++k) {
+    if (depths[k] <= 0.0) continue;
+    const double psi = (-90.0 + 30.0 * k) * std::numbers::pi / 180.0;
+    const double f = 1e5 * std::pow(depths[k], 1.5) * depths[k] / sum;
+    fz += f;
+    mx += radius * std::cos(tilt) * std::sin(psi) * f;
+  }
+  std::printf(
+      "tilted face: %d samples (truth %d), Fz %.15e (truth %.15e), Mx %.15e (truth %.15e)\n",
+      loads.points, inside, loads.force.z, fz, loads.torqueAtI.x, mx);
+  ASSERT_EQ(inside, 7);
+  EXPECT_EQ(loads.points, inside);
+  // Rounding only: depths ~1e-3 from coordinates ~0.2 (1e-13 relative each).
+  EXPECT_NEAR(loads.force.z, fz, 1e-11 * fz);
+  EXPECT_NEAR(loads.torqueAtI.x, mx, 1e-11 * fz * radius);
+  EXPECT_LT(std::abs(loads.force.x) + std::abs(loads.force.y), 1e-12 * fz);
 }
 
 TEST(ContactFrustum, SphereHittingACylinderSideFollowsTheImpactOde) {
