@@ -4,6 +4,7 @@
 // the forces are computed by mechanics/contact/.
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -33,9 +34,14 @@ struct ContactSolid {
   SourceLocation where;
 };
 
-// Whether the narrow phase (mechanics/contact) covers the pair: every pair but two frustums.
-inline bool contactPairSupported(ContactSolid::Shape a, ContactSolid::Shape b) {
-  return a != ContactSolid::Shape::Frustum || b != ContactSolid::Shape::Frustum;
+// Two frustums touch side against side through their sections perpendicular to the axes
+// (theory §6c, "Frustum against frustum"): a depth off by the factor 1/cos(half-angle) of the
+// sides' slope, at most 0.4 % up to this half-angle (5 degrees); steeper pairs are refused.
+inline constexpr double kMaxFrustumPairHalfAngle = 5.0 * 3.14159265358979323846 / 180.0;
+
+// Half-angle of a frustum's side (0 for a cylinder), radians.
+inline double frustumHalfAngle(const ContactSolid& s) {
+  return std::atan(std::abs(s.size[0] - s.size[1]) / std::abs(s.size[2]));
 }
 
 struct Contact {

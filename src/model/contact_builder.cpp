@@ -245,19 +245,28 @@ void rejectUnsupported(StatementArguments& a) {
 }
 
 // Every I solid against every J solid must be a pair the narrow phase covers (theory §6c):
-// two solids of revolution (CYLINDER, FRUSTUM) are not yet; one located message per pair.
+// two solids of revolution (CYLINDER, FRUSTUM) only with sides of half-angle up to
+// kMaxFrustumPairHalfAngle; one located message per pair.
 bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
   bool ok = true;
   for (const ContactSolid& a : c.iSolids)
-    for (const ContactSolid& b : c.jSolids)
-      if (!contactPairSupported(a.shape, b.shape)) {
-        diags.error(s.where, s.subject(),
-                    "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
-                        std::to_string(b.graphicsId) +
-                        ": contact between two CYLINDER/FRUSTUM solids is not supported yet",
-                    "Model one of the two as ELLIPSOID (sphere) or BOX solids.");
-        ok = false;
-      }
+    for (const ContactSolid& b : c.jSolids) {
+      if (a.shape != ContactSolid::Shape::Frustum || b.shape != ContactSolid::Shape::Frustum)
+        continue;
+      const ContactSolid& steep = frustumHalfAngle(a) >= frustumHalfAngle(b) ? a : b;
+      const double angle = frustumHalfAngle(steep);
+      if (angle <= kMaxFrustumPairHalfAngle) continue;
+      diags.error(s.where, s.subject(),
+                  "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
+                      std::to_string(b.graphicsId) +
+                      ": contact between two CYLINDER/FRUSTUM solids needs sides within 5 "
+                      "degrees of their axes (GRAPHICS/" +
+                      std::to_string(steep.graphicsId) + " has " +
+                      std::to_string(angle * 180.0 / M_PI) + " degrees)",
+                  "Model the steep FRUSTUM as a CYLINDER, or one of the two as ELLIPSOID "
+                  "(sphere) or BOX solids.");
+      ok = false;
+    }
   return ok;
 }
 

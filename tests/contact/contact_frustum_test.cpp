@@ -3,12 +3,14 @@
 // - a cylinder lying on a box floor settles where each rim carries half the weight:
 //   k d^e = m g / 2 (the two rims are the two contact points of the line contact);
 // - a cylinder standing on its flat face, released tilted by 2 degrees, rights itself and
-//   settles at k d^e = m g (the whole bottom rim is one contact point);
+//   settles at k d^e = m g (the bottom rim's samples share one force);
+// - the rim samples of a tilted face at a given placement against their depths computed here
+//   from the pose (force and moment);
 // - a sphere hitting a cylinder's side: the penetration history against the 1-D IMPACT ODE
 //   integrated here by RK4;
 // - a cylinder rolls down an incline without slip: a = (2/3) g sin(phi);
 // - the exact partials of every frustum pair against central differences of the residual;
-// - the builder reads the sizes and refuses two frustums, a partial RANGLE, no volume.
+// - the builder reads the sizes and refuses a steep frustum pair, a partial RANGLE, no volume.
 
 #include <gtest/gtest.h>
 
@@ -16,6 +18,7 @@
 #include <numbers>
 
 #include "contact/contact_support.hpp"
+#include "mechanics/contact/contact_loads.hpp"
 #include "support/built_model.hpp"
 
 namespace openmss::contact_test {
@@ -66,13 +69,12 @@ TEST(ContactFrustum, CylinderLyingOnAFloorSettlesWhereEachRimCarriesHalfTheWeigh
   EXPECT_LT(std::abs(last.r.x()) + std::abs(last.r.y()), 1e-9);
 }
 
-// DISABLED: measured at t = 2 s the cylinder still rocks (|w| = 0.37 rad/s, depth 2.98e-3 vs
-// 3.38e-3): the single rim point does not damp the rocking out in this time; to investigate
-// (theory §6c, "Frustum pairs", open point).
-TEST(ContactFrustum, DISABLED_CylinderOnItsFlatFaceRightsItselfAndSettlesUnderTheWholeWeight) {
+// With one point per rim (the rim's centroid) this cylinder still rocked at t = 2 s
+// (|w| = 0.37 rad/s); the rim samples damp the rocking (theory §6c, "rim samples").
+TEST(ContactFrustum, CylinderOnItsFlatFaceRightsItselfAndSettlesUnderTheWholeWeight) {
   // Standing (axis along z), released tilted by 2 degrees about x with its low bottom edge
-  // touching the floor: the contact point (the depth-weighted centroid of the bottom rim)
-  // rights it; at rest the whole rim is one point: k d^e = m g.
+  // touching the floor: the rim samples (deeper ones carry more) right it; at rest the 12
+  // samples share one force: k d^e = m g.
   const double tilt = 2.0 * std::numbers::pi / 180.0;
   const double zc = 0.2 * std::cos(tilt) + 0.1 * std::sin(tilt);  // low edge at z = 0
   char qg[96];
@@ -87,6 +89,47 @@ TEST(ContactFrustum, DISABLED_CylinderOnItsFlatFaceRightsItselfAndSettlesUnderTh
               0.2 - last.r.z(), d, std::abs((0.2 - last.r.z()) / d - 1), last.w.norm());
   EXPECT_NEAR(0.2 - last.r.z(), d, 1e-6 * d);
   EXPECT_LT(last.w.norm(), 1e-6);
+}
+
+TEST(ContactFrustum, RimSamplesOfATiltedFaceShareOneForceByDepth) {
+  // Standing cylinder tilted by 2 degrees about x (REULER 0,2D,0), its bottom centre c at
+  // z = -0.001. A rim point at body angle psi is at height zc(psi) = -0.001 + R sin(psi) sin(2
+  // deg): its depth is 0.001 - R sin(2 deg) sin(psi). The samples start at the deepest point
+  // (psi = -90 deg) every 30 degrees; those inside (7 here) carry k d^e d / sum d. The moment
+  // about the I marker (c) is sum R cos(2 deg) sin(psi) F (the forces are vertical).
+  const double tilt = 2.0 * std::numbers::pi / 180.0, radius = 0.1;
+  char qg[96];
+  std::snprintf(qg, sizeof qg, "0,0,%.17g, REULER=0,2D,0", 0.2 * std::cos(tilt) - 0.001);
+  const model::Model m = build(cylinderDeck(
+      qg, "QP=0,0,-0.2", "IMPACT, STIFFNESS=1e5, DAMPING=100, DMAX=1e-3, EXPONENT=1.5", ""));
+  mechanics::MultibodySystem s(m);
+  const Eigen::VectorXd y = s.initialState();
+  const auto loads =
+      mechanics::contact::contactLoads<double>(m, s.layout(), m.contacts.at(0), y.data(), false);
+  double depths[12], sum = 0.0;
+  int inside = 0;
+  for (int k = 0; k < 12; ++k) {
+    const double psi = (-90.0 + 30.0 * k) * std::numbers::pi / 180.0;
+    depths[k] = 0.001 - radius * std::sin(tilt) * std::sin(psi);
+    if (depths[k] > 0.0) sum += depths[k], ++inside;
+  }
+  double fz = 0.0, mx = 0.0;
+  for (int k = 0; k < 12; ++k) {
+    if (depths[k] <= 0.0) continue;
+    const double psi = (-90.0 + 30.0 * k) * std::numbers::pi / 180.0;
+    const double f = 1e5 * std::pow(depths[k], 1.5) * depths[k] / sum;
+    fz += f;
+    mx += radius * std::cos(tilt) * std::sin(psi) * f;
+  }
+  std::printf(
+      "tilted face: %d samples (truth %d), Fz %.15e (truth %.15e), Mx %.15e (truth %.15e)\n",
+      loads.points, inside, loads.force.z, fz, loads.torqueAtI.x, mx);
+  ASSERT_EQ(inside, 7);
+  EXPECT_EQ(loads.points, inside);
+  // Rounding only: depths ~1e-3 from coordinates ~0.2 (1e-13 relative each).
+  EXPECT_NEAR(loads.force.z, fz, 1e-11 * fz);
+  EXPECT_NEAR(loads.torqueAtI.x, mx, 1e-11 * fz * radius);
+  EXPECT_LT(std::abs(loads.force.x) + std::abs(loads.force.y), 1e-12 * fz);
 }
 
 TEST(ContactFrustum, SphereHittingACylinderSideFollowsTheImpactOde) {
@@ -196,8 +239,11 @@ TEST(ContactFrustum, PartialsOfEveryFrustumPairAreExact) {
   v << 0.7, 0.2, -0.1, 0.3, 0.2, 1.0;
   // Lying, tilted 3 degrees about y: one rim partly in the floor (the acos branch).
   checkJacobian(cylinderDeck("0,0,0.099, REULER=90D,87D,0D", "QP=0,0,-0.2", kFrictionLaw, ""), v);
-  // Standing, tilted 0.05 degrees: the whole bottom rim in the floor (the full-rim branch).
-  checkJacobian(cylinderDeck("0,0,0.199, REULER=0,0.05D,0", "QP=0,0,-0.2", kFrictionLaw, ""), v);
+  // Standing, tilted 0.5 degrees: the whole bottom rim in the floor (all 12 samples inside:
+  // the centre's depth 9.9e-4 exceeds rho = R sin 0.5 deg = 8.7e-4). Nearer to upright the
+  // samples turn with u = -perp/|perp|, whose curvature 1/|perp| makes central differences with
+  // h = 1e-7 too coarse for the 1e-6 bar (measured 1.4e-6 at 0.05 degrees).
+  checkJacobian(cylinderDeck("0,0,0.199, REULER=0,0.5D,0", "QP=0,0,-0.2", kFrictionLaw, ""), v);
   // A sphere into a frustum's slanted side (frustum on ground, sphere I) and a box corner into
   // a cylinder's side (the box is I, the cylinder J).
   const std::string sphereOnFrustum =

@@ -34,11 +34,12 @@ inline model::Model build(const std::string& text) {
   return m;
 }
 
-// One output sample of body 0 (the first moving part): time, CM position and velocity, and
-// the angular velocity in ground axes.
+// One output sample of body 0 (the first moving part): time, CM position and velocity, the
+// angular velocity in ground axes and the body's axes in ground (columns).
 struct Sample {
   double t;
   Eigen::Vector3d r, v, w;
+  Eigen::Matrix3d a;
 };
 
 // Dynamic run (GSTIFF-style BDF, I3) to `end` with outputs every `step`. With `events`, the
@@ -71,8 +72,8 @@ inline std::vector<Sample> simulate(const model::Model& m, double end, double st
     const Quat<double> e{x(StateLayout::kE), x(StateLayout::kE + 1), x(StateLayout::kE + 2),
                          x(StateLayout::kE + 3)};
     const Eigen::Vector3d wBody = x.segment<3>(StateLayout::kW);
-    out.push_back({t, x.segment<3>(StateLayout::kR), x.segment<3>(StateLayout::kV),
-                   toEigen(rotationOf(e)) * wBody});
+    const Eigen::Matrix3d a = toEigen(rotationOf(e));
+    out.push_back({t, x.segment<3>(StateLayout::kR), x.segment<3>(StateLayout::kV), a * wBody, a});
   };
   record(0.0, y);
   const int n = static_cast<int>(std::lround(end / step));

@@ -1,9 +1,11 @@
 #pragma once
 // The loads of one CONTACT element (docs/theory.md §6c): every pair of an I solid and a J
-// solid whose bounding spheres overlap goes to the narrow phase; each contact point gets the
-// normal law and, when friction is on, the friction law; the sums act on I's part through the
-// I marker's origin and, equal and opposite, on J's part through the J marker's origin.
+// solid whose bounding spheres overlap (tested on values first) goes to the narrow phase; each
+// contact point gets the normal law and, when friction is on, the friction law; the sums act on I's
+// part through the I marker's origin and, equal and opposite, on J's part through the J marker's
+// origin.
 
+#include <utility>
 #include <vector>
 
 #include "mechanics/contact/contact_law.hpp"
@@ -14,42 +16,72 @@ namespace openmss::mechanics::contact {
 
 template <class T>
 struct ContactLoads {
-  V3<T> force;          // on I's part, through iOrigin
-  V3<T> torqueAtI;      // about iOrigin
-  V3<T> torqueAtJ;      // of the reaction -force, about jOrigin
+  V3<T> force;      // on I's part, through iOrigin
+  V3<T> torqueAtI;  // about iOrigin
+  V3<T> torqueAtJ;  // of the reaction -force, about jOrigin
   V3<T> iOrigin, jOrigin;
-  int points = 0;       // contact points found (0: separated)
+  int points = 0;  // contact points found (0: separated)
   double maxDepth = 0.0;
 };
+
+// A marker's origin in ground on values: the broad phase needs no partials, and the dual
+// states of the markers are the costly part of a Newton matrix (theory §6c, "Benchmark").
+// The same operations as markerState's, so the value is the same to the bit.
+template <class T>
+V3<double> markerOriginValue(const model::Model& m, const StateLayout& layout, int marker,
+                             const T* y) {
+  const model::Marker& mk = m.markers[marker];
+  const V3<double> sb = V3<double>::from(mk.position);
+  const int body = m.parts[mk.part].body;
+  if (body < 0) return sb;
+  const T* q = y + layout.body(body);
+  const V3<double> r{valueOf(q[StateLayout::kR]), valueOf(q[StateLayout::kR + 1]),
+                     valueOf(q[StateLayout::kR + 2])};
+  const Quat<double> e{valueOf(q[StateLayout::kE]), valueOf(q[StateLayout::kE + 1]),
+                       valueOf(q[StateLayout::kE + 2]), valueOf(q[StateLayout::kE + 3])};
+  return r + rotationOf(e) * sb;
+}
 
 // `withFriction` is false when COULOMB_FRICTION is OFF, or DYNAMICS_ONLY outside dynamics.
 template <class T>
 ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
                              const model::Contact& c, const T* y, bool withFriction) {
   ContactLoads<T> out;
+  // Broad phase: bounding spheres about the reference markers, on values, before any work on
+  // T. With no pair near, the loads are zero in a neighbourhood of y (partials zero too).
+  std::vector<V3<double>> iCentres, jCentres;
+  for (const model::ContactSolid& s : c.iSolids)
+    iCentres.push_back(markerOriginValue(m, layout, s.marker, y));
+  for (const model::ContactSolid& s : c.jSolids)
+    jCentres.push_back(markerOriginValue(m, layout, s.marker, y));
+  std::vector<std::pair<size_t, size_t>> near;
+  for (size_t p = 0; p < c.iSolids.size(); ++p)
+    for (size_t q = 0; q < c.jSolids.size(); ++q) {
+      const V3<double> gap = iCentres[p] - jCentres[q];
+      const double reach = c.iSolids[p].boundingRadius + c.jSolids[q].boundingRadius;
+      if (dot(gap, gap) <= reach * reach) near.emplace_back(p, q);
+    }
+  if (!c.active || near.empty()) {
+    out.iOrigin = V3<T>::from(markerOriginValue(m, layout, c.iMarker, y));
+    out.jOrigin = V3<T>::from(markerOriginValue(m, layout, c.jMarker, y));
+    return out;
+  }
   const MarkerState<T> mi = markerState(m, layout, c.iMarker, y);
   const MarkerState<T> mj = markerState(m, layout, c.jMarker, y);
   out.iOrigin = mi.p;
   out.jOrigin = mj.p;
-  if (!c.active) return out;
-  std::vector<SolidFrame<T>> jFrames;
-  jFrames.reserve(c.jSolids.size());
-  for (const model::ContactSolid& sj : c.jSolids) {
-    const MarkerState<T> s = markerState(m, layout, sj.marker, y);
-    jFrames.push_back({s.p, s.a});
-  }
+  // The frames of the solids of the near pairs only, each once.
+  std::vector<SolidFrame<T>> iFrames(c.iSolids.size()), jFrames(c.jSolids.size());
+  std::vector<char> iDone(c.iSolids.size(), 0), jDone(c.jSolids.size(), 0);
+  auto frameOf = [&](const model::ContactSolid& s) {
+    const MarkerState<T> st = markerState(m, layout, s.marker, y);
+    return SolidFrame<T>{st.p, st.a};
+  };
   std::vector<ContactPoint<T>> points;
-  for (const model::ContactSolid& si : c.iSolids) {
-    const MarkerState<T> s = markerState(m, layout, si.marker, y);
-    const SolidFrame<T> fi{s.p, s.a};
-    for (size_t q = 0; q < c.jSolids.size(); ++q) {
-      // Broad phase: bounding spheres about the reference markers, on values.
-      const V3<double> gap{valueOf(fi.p.x - jFrames[q].p.x), valueOf(fi.p.y - jFrames[q].p.y),
-                           valueOf(fi.p.z - jFrames[q].p.z)};
-      const double reach = si.boundingRadius + c.jSolids[q].boundingRadius;
-      if (dot(gap, gap) > reach * reach) continue;
-      narrowPhase(si, fi, c.jSolids[q], jFrames[q], points);
-    }
+  for (const auto& [p, q] : near) {
+    if (!iDone[p]) iFrames[p] = frameOf(c.iSolids[p]), iDone[p] = 1;
+    if (!jDone[q]) jFrames[q] = frameOf(c.jSolids[q]), jDone[q] = 1;
+    narrowPhase(c.iSolids[p], iFrames[p], c.jSolids[q], jFrames[q], points);
   }
   for (const ContactPoint<T>& p : points) {
     // Velocity of the material point of I at the contact point relative to that of J.
@@ -57,7 +89,7 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
     const V3<T> vj = mj.pdot + cross(mj.w, p.point - mj.p);
     const V3<T> vrel = vi - vj;
     const T approach = -dot(vrel, p.normal);  // the rate of the penetration
-    const T fn = normalForce(c, p.depth, approach);
+    const T fn = normalForce(c, p.depth, approach) * p.weight;
     V3<T> f = p.normal * fn;
     if (withFriction) f += frictionForce(c, fn, vrel - p.normal * dot(vrel, p.normal));
     out.force += f;

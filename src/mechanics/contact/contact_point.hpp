@@ -21,6 +21,10 @@ struct ContactPoint {
   V3<T> point;   // where the force acts, midway between the two surfaces
   V3<T> normal;  // unit, from J's solid towards I's (the normal force pushes I along it)
   T depth;       // penetration, > 0
+  // Share of the normal law's force this point carries (theory §6c, "Rim samples"): 1 for a
+  // point that is a contact of its own; the depth-weighted share d_k / sum d_j for the samples
+  // of one rim, so that the samples together carry one force of their region.
+  T weight = T(1.0);
 };
 
 // The box's extents along each axis of its corner frame: [lo, hi] (X, Y, Z may be negative).

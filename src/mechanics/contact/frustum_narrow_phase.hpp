@@ -7,11 +7,12 @@
 //   half-plane through the axis and the point: exact, so a sphere against a cylinder or a
 //   frustum is exact.
 // - A rim circle of the frustum against a box face: the depth along the rim is
-//   delta0 + rho cos(phi), closed form; the rim gives one contact point, with the largest depth
-//   of the rim, at the depth-weighted centroid of the part of the rim inside the face.
+//   delta0 + rho cos(phi), closed form; the rim is sampled at fixed angles from its deepest
+//   point, the samples inside sharing one force in proportion to their depths.
 
 #include <algorithm>
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "mechanics/contact/contact_point.hpp"
@@ -134,39 +135,44 @@ void verticesInFrustum(const model::ContactSolid& v, const SolidFrame<T>& fv,
   }
 }
 
-// One rim circle (centre c, radius R, axis a) against the half-space depth(x) = hf - nf.x > 0:
-// along the rim the depth is delta0 + rho cos(phi) (phi from the deepest direction u). Returns
-// false when no part of the rim is inside. The point is the depth-weighted centroid of the
-// inside arc; the depth is the rim's largest, delta0 + rho.
+// Samples of one rim (theory §6c, "Rim samples"): 12, 30 degrees apart, enough for the
+// samples of a rim lying flat on a face to carry its moment and damp its rocking.
+inline constexpr int kRimSamples = 12;
+
+// One rim circle (centre c, radius R, axis a, `fallback` a unit perpendicular to a) against
+// the half-space depth(x) = hf - nf.x > 0. Along the rim the depth is delta0 + rho cos(phi),
+// phi from the deepest direction u, rho = R |nf - (nf.a) a|. The rim is sampled at
+// phi_k = 2 pi k / kRimSamples from u; every sample inside is a contact point at the rim point,
+// carrying the share d_k / sum d_j of one force (ContactPoint::weight). Appends the samples
+// inside (none when the whole rim is outside) with the normal nf (flip: negated).
 template <class T>
-bool rimInHalfSpace(const V3<T>& c, double radius, const V3<T>& a, const V3<T>& nf, const T& hf,
-                    T& depth, V3<T>& point) {
+void rimSamplesInHalfSpace(const V3<T>& c, double radius, const V3<T>& a, const V3<T>& fallback,
+                           const V3<T>& nf, const T& hf, bool flip,
+                           std::vector<ContactPoint<T>>& out) {
   const T delta0 = hf - dot(nf, c);
   const V3<T> perp = nf - a * dot(nf, a);
   const double p2 = valueOf(dot(perp, perp));
   // Flat on the face (axis along the normal): no deepest direction, rho = 0 (its derivative,
   // |perp|'s, is undefined there; 0 is the value the cone |perp| tends to along every path).
-  const bool flat = radius == 0.0 || p2 < 1e-24;
+  // The samples' sum of forces and moments does not depend on where the samples start then.
+  const bool flat = p2 < 1e-24;
   const T rho = flat ? T(0.0) : radius * norm(perp);
-  if (valueOf(delta0) + valueOf(rho) <= 0.0) return false;
-  depth = delta0 + rho;
-  if (flat) {
-    point = c;
-    return true;
+  if (valueOf(delta0) + valueOf(rho) <= 0.0) return;
+  const V3<T> u = flat ? fallback : perp * (-1.0 / norm(perp));  // towards the deepest point
+  const V3<T> w = cross(a, u);
+  const size_t first = out.size();
+  T total(0.0);
+  const int samples = radius == 0.0 ? 1 : kRimSamples;
+  for (int k = 0; k < samples; ++k) {
+    const double phi = 2.0 * std::numbers::pi * k / kRimSamples;
+    const double cs = std::cos(phi), sn = std::sin(phi);
+    const T depth = delta0 + rho * cs;
+    if (valueOf(depth) <= 0.0) continue;
+    const V3<T> x = c + (u * cs + w * sn) * T(radius);
+    out.push_back({x + nf * (depth * 0.5), flip ? -nf : nf, depth});
+    total += depth;
   }
-  const V3<T> u = perp * (-1.0 / norm(perp));  // towards the deepest rim point
-  // Centroid offset along u, as a fraction of the radius: int w cos / int w over the arc.
-  T ratio;
-  if (valueOf(delta0) >= valueOf(rho)) {
-    ratio = rho * (0.5 / delta0);  // the whole rim is inside: pi rho / (2 pi delta0)
-  } else {
-    const T phi0 = acosOf(-delta0 / rho);
-    const T s0 = sinOf(phi0);
-    ratio =
-        (delta0 * s0 + rho * (0.5 * phi0 + 0.5 * s0 * cosOf(phi0))) / (delta0 * phi0 + rho * s0);
-  }
-  point = c + u * (ratio * radius);
-  return true;
+  for (size_t k = first; k < out.size(); ++k) out[k].weight = out[k].depth / total;
 }
 
 // The two rims of frustum (solid c) against the faces of box b: a rim touches a face when its
@@ -202,10 +208,7 @@ void rimsInBox(const model::ContactSolid& c, const SolidFrame<T>& fc, const mode
         if (down < best) best = down, nearest = 2 * k;
       }
       if (!inside || nearest != face) continue;
-      T depth;
-      V3<T> point;
-      if (!rimInHalfSpace(centre, radius, g.a, nf, hf, depth, point)) continue;
-      out.push_back({point + nf * (depth * 0.5), flip ? -nf : nf, depth});
+      rimSamplesInHalfSpace(centre, radius, g.a, fc.a.c[0], nf, hf, flip, out);
     }
   }
 }

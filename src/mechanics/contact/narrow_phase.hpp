@@ -4,13 +4,15 @@
 // and point are computed on T so their partials are exact between switches.
 // Analytic pairs: sphere-sphere, sphere-box (a box floor is the plane), box-box (the vertices
 // of each box inside the other: exact for face-on-face and vertex-on-face contact); the pairs
-// with a frustum (CYLINDER, FRUSTUM) are in frustum_narrow_phase.hpp.
+// with a frustum (CYLINDER, FRUSTUM) are in frustum_narrow_phase.hpp, two frustums in
+// frustum_pair_narrow_phase.hpp.
 
 #include <algorithm>
 #include <vector>
 
 #include "mechanics/contact/contact_point.hpp"
 #include "mechanics/contact/frustum_narrow_phase.hpp"
+#include "mechanics/contact/frustum_pair_narrow_phase.hpp"
 
 namespace openmss::mechanics::contact {
 
@@ -139,6 +141,8 @@ bool narrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
   } else if (si.shape == S::Box && sj.shape == S::Frustum) {
     verticesInFrustum(si, fi, sj, fj, false, out);
     rimsInBox(sj, fj, si, fi, true, out);
+  } else if (si.shape == S::Frustum && sj.shape == S::Frustum) {
+    frustumFrustum(si, fi, sj, fj, false, out);
   } else {
     return false;
   }

@@ -1,0 +1,137 @@
+#!/usr/bin/python3
+"""CONTACT benchmark: N spheres falling into a box (docs/theory.md §6c, "Benchmark").
+
+    /usr/bin/python3 bench/contact_pile.py --openmss build/src/openmss [--mujoco PEER] 100
+
+Writes an ADAMS data set of N spheres (radius 0.05, mass 0.1) on a jittered grid above an open
+box (a floor and four walls, BOX solids on ground), one CONTACT per sphere against the box and
+one per pair of spheres (IMPACT, no friction), runs it with GSTIFF, and prints the wall time,
+the integration steps and the final mean height of the spheres. With --mujoco, the program
+bench/peers/mujoco_pile.cpp builds the same spheres and box in MuJoCo (soft contacts, RK4 at a
+fixed step) and its figures are printed beside ours. The pile is what the issue asks (100 and
+1000 spheres); OpenMSS has one element per CONTACT statement, so N spheres cost N (N - 1) / 2
+pair elements and the 1000-sphere pile (499,500 statements) is measured only when asked.
+"""
+import argparse
+import os
+import re
+import subprocess
+import tempfile
+import time
+
+RADIUS, MASS, SPACING = 0.05, 0.1, 0.12
+
+
+def layout(n):
+    """Sphere centres: a square grid of side k (k^2 >= n / layers) in layers 0.12 apart,
+    jittered by a deterministic LCG (1e-3 of the spacing) so the pile is not symmetric."""
+    k = 1
+    while k * k * k < n:
+        k += 1
+    state = 12345
+    centres = []
+    for i in range(n):
+        layer, cell = divmod(i, k * k)
+        row, col = divmod(cell, k)
+        jitter = []
+        for _ in range(2):
+            state = (1103515245 * state + 12345) % 2**31
+            jitter.append((state / 2**31 - 0.5) * 1e-3 * SPACING)
+        centres.append(((col - (k - 1) / 2) * SPACING + jitter[0],
+                        (row - (k - 1) / 2) * SPACING + jitter[1],
+                        RADIUS + 0.02 + layer * SPACING))
+    return k, centres
+
+
+def dataset(n):
+    k, centres = layout(n)
+    half = k * SPACING / 2 + 0.01  # inner half-width of the box
+    law = "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-4, EXPONENT=1.5"
+    out = ["contact pile", "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND",
+           "PART/1, GROUND"]
+    # Floor (top face z = 0) and four walls 0.1 thick, as BOX solids on ground markers.
+    walls = [(-half - 0.1, -half - 0.1, -0.1, 2 * half + 0.2, 2 * half + 0.2, 0.1),
+             (-half - 0.1, -half - 0.1, 0.0, 0.1, 2 * half + 0.2, 2.0),
+             (half, -half - 0.1, 0.0, 0.1, 2 * half + 0.2, 2.0),
+             (-half, -half - 0.1, 0.0, 2 * half, 0.1, 2.0),
+             (-half, half, 0.0, 2 * half, 0.1, 2.0)]
+    for w, (x, y, z, dx, dy, dz) in enumerate(walls):
+        out.append(f"MARKER/{10 + w}, PART=1, QP={x:.12g},{y:.12g},{z:.12g}")
+        out.append(f"GRAPHICS/{1 + w}, BOX, CORNER={10 + w}, X={dx:.12g}, Y={dy:.12g}, "
+                   f"Z={dz:.12g}")
+    inertia = 0.4 * MASS * RADIUS**2
+    for i, (x, y, z) in enumerate(centres):
+        p = 100 + i
+        out.append(f"PART/{p}, MASS={MASS}, CM={p * 10}, IP={inertia:.12g},{inertia:.12g},"
+                   f"{inertia:.12g}, QG={x:.12g},{y:.12g},{z:.12g}")
+        out.append(f"MARKER/{p * 10}, PART={p}")
+        out.append(f"GRAPHICS/{p * 10}, ELLIPSOID, CM={p * 10}, XSCALE={2 * RADIUS}, "
+                   f"YSCALE={2 * RADIUS}, ZSCALE={2 * RADIUS}")
+    cid = 1
+    for i in range(n):
+        out.append(f"CONTACT/{cid}, IGEOM={(100 + i) * 10}, JGEOM=1,2,3,4,5, {law}")
+        cid += 1
+    for i in range(n):
+        for j in range(i + 1, n):
+            out.append(f"CONTACT/{cid}, IGEOM={(100 + i) * 10}, JGEOM={(100 + j) * 10}, {law}")
+            cid += 1
+    out += ["ACCGRAV/KGRAV=-9.81", "END", ""]
+    return "\n".join(out), centres
+
+
+def run_openmss(openmss, n, end, error, workdir):
+    text, _ = dataset(n)
+    with open(os.path.join(workdir, "pile.adm"), "w") as f:
+        f.write(text)
+    with open(os.path.join(workdir, "pile.acf"), "w") as f:
+        f.write(f"pile.adm\npile\nINTEGRATOR/GSTIFF, ERROR={error:g}\n"
+                f"SIMULATE/DYNAMIC, END={end:g}, STEPS=10\nSTOP\n")
+    start = time.perf_counter()
+    proc = subprocess.run([openmss, "run", "pile.acf"], cwd=workdir, capture_output=True,
+                          text=True)
+    wall = time.perf_counter() - start
+    m = re.search(r"reached t = (\S+) with (\d+) integration steps", proc.stdout + proc.stderr)
+    if proc.returncode != 0 or not m:
+        tail = (proc.stdout + proc.stderr).strip().splitlines()[-1:]
+        return {"wall": wall, "status": "failed", "note": tail}
+    return {"wall": wall, "steps": int(m.group(2)), "t": float(m.group(1)), "status": "ok"}
+
+
+def run_mujoco(peer, n, end, dt):
+    _, centres = dataset(n)
+    k, _ = layout(n)
+    args = [peer, str(n), str(k), f"{end:g}", f"{dt:g}"]
+    proc = subprocess.run(args, capture_output=True, text=True)
+    values = dict(line.split("=", 1) for line in proc.stdout.splitlines() if "=" in line)
+    return {"wall": float(values.get("wall", "nan")), "steps": int(values.get("steps", "0")),
+            "status": "ok" if proc.returncode == 0 else "failed"}
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    p.add_argument("sizes", nargs="+", type=int)
+    p.add_argument("--openmss", required=True)
+    p.add_argument("--mujoco", help="the compiled bench/peers/mujoco_pile.cpp")
+    p.add_argument("--end", type=float, default=0.5)
+    p.add_argument("--error", type=float, default=1e-3)
+    p.add_argument("--dt", type=float, default=1e-4, help="MuJoCo's fixed step")
+    args = p.parse_args()
+    for n in args.sizes:
+        with tempfile.TemporaryDirectory(prefix="openmss-pile-") as workdir:
+            r = run_openmss(os.path.abspath(args.openmss), n, args.end, args.error, workdir)
+        pairs = n * (n - 1) // 2
+        line = (f"pile N={n}: {n + pairs} CONTACT elements, OpenMSS GSTIFF ERROR={args.error:g} "
+                f"to {args.end:g} s: {r['status']} in {r['wall']:.2f} s")
+        if r["status"] == "ok":
+            line += f", {r['steps']} steps, {1e3 * r['wall'] / max(r['steps'], 1):.3f} ms/step"
+        else:
+            line += f" ({r.get('note')})"
+        print(line, flush=True)
+        if args.mujoco:
+            q = run_mujoco(args.mujoco, n, args.end, args.dt)
+            print(f"pile N={n}: MuJoCo RK4 dt={args.dt:g}: {q['status']} in {q['wall']:.2f} s, "
+                  f"{q['steps']} steps", flush=True)
+
+
+if __name__ == "__main__":
+    main()
