@@ -172,6 +172,7 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
   if (s.type == IntegratorType::Dstiff) p.formulation = IntegratorFormulation::Si2;
   p.error = s.error.value_or(1e-3);
   p.maxit = s.maxit;
+  p.modifiedCorrector = s.modifiedCorrector;
   // DSTIFF and ABAM (docs/integrators.md, "Defaults") have no step limit; nor has
   // MERSON (its steps land on the output times; docs/integrators.md, "MERSON").
   const bool dstiff = s.type == IntegratorType::Dstiff || s.type == IntegratorType::Abam ||
@@ -223,6 +224,7 @@ std::string integratorParameters(const IntegratorPlan& p) {
   }
   if (p.type != IntegratorType::Merson) text += ", MAXIT = " + std::to_string(p.maxit);
   if (p.interpolate) text += ", INTERPOLATE = ON";
+  if (p.modifiedCorrector) text += ", CORRECTOR = MODIFIED";
   return text;
 }
 
@@ -257,6 +259,7 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       s.maxit = p.maxit;
       s.fixedCoefficients = p.type == IntegratorType::Gstiff;
       s.patternGiven = p.patternGiven;
+      s.modifiedCorrector = p.modifiedCorrector && isBdfFamily(p.type);
       for (int j = 0; j < 10; ++j) s.pattern[j] = p.pattern[j];
       if (p.type == IntegratorType::Dstiff)
         inner = std::make_unique<solvers::IdaIntegrator>(*problem, s);

@@ -28,6 +28,7 @@ struct IntegratorPlan {
   double alpha = 0.0, beta = 0.25, gamma = 0.5;
   bool patternGiven = false;
   bool pattern[10] = {};
+  bool modifiedCorrector = false;  // CORRECTOR=MODIFIED (GSTIFF, WSTIFF)
 };
 
 // Why these settings cannot run here (nullopt when they can): a method without an

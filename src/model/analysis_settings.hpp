@@ -72,6 +72,7 @@ struct IntegratorSettings {
   std::optional<bool> interpolate;                 // INTERPOLATE=ON/OFF
   double alpha = -0.3;                             // ALPHA (HHT)
   std::optional<double> beta, gamma;               // BETA, GAMMA (NEWMARK; HHT derives them)
+  bool modifiedCorrector = false;                  // CORRECTOR=MODIFIED (GSTIFF, WSTIFF)
 };
 const char* integratorTypeName(IntegratorType type);  // "GSTIFF", "HHT", ...
 const char* formulationName(IntegratorFormulation f);  // "I3", "SI2", "SI1"

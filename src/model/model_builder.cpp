@@ -471,7 +471,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   readMaterials(dataset, diags);  // MATERIAL (data only, checked) and PART's MATERIAL=
   buildJoints(groups.joints, model, diags);
   buildJointPrimitives(groups.jprims, model, diags);
-  buildMotions(groups.motions, model, diags);  // after the joints they drive
+  buildMotions(groups.motions, groups.userEquations, model, diags);  // after the joints they drive
   buildFrictions(groups.frictions, model, diags);  // FRICTION (friction_builder.cpp)
   // User equations (user_equation_builder.cpp): before any function is bound, since every
   // function may read them (VARVAL, DIF, ARYVAL, ...).

@@ -1,9 +1,11 @@
 #include "model/motion_builder.hpp"
 
+#include <algorithm>
 #include <string>
 #include <utility>
 
 #include "model/data_element_builder.hpp"
+#include "model/motion_variables.hpp"
 #include "model/part_builder.hpp"
 #include "model/statement_arguments.hpp"
 #include "model/user_routine_binding.hpp"
@@ -148,8 +150,10 @@ bool userMotion(const Statement& s, const Argument& f, const Model& model, Motio
   return true;
 }
 
-// FUNCTION=: an expression of TIME (and data elements) only. Returns false when it is not.
-bool motionFunction(StatementArguments& a, const Model& model, Motion& m, Diagnostics& diags) {
+// FUNCTION=: an expression of TIME (and data elements) only, VARVAL of VARIABLEs that are
+// functions of TIME included (motion_variables.hpp). Returns false when it is not.
+bool motionFunction(StatementArguments& a, const Model& model,
+                    const std::vector<const Statement*>& variables, Motion& m, Diagnostics& diags) {
   const Statement& s = a.statement();
   const Argument* f = s.find("FUNCTION");
   if (!f) {
@@ -159,6 +163,13 @@ bool motionFunction(StatementArguments& a, const Model& model, Motion& m, Diagno
   if (f->expression.rfind("USER", 0) == 0) return userMotion(s, *f, model, m, diags);
   if (!expr::Expression::parse(f->expression, f->valueWhere, s.subject(), diags, m.function))
     return false;
+  const auto& calls = m.function.hostCalls();
+  if (!calls.empty() && std::all_of(calls.begin(), calls.end(),
+                                    [](const expr::HostCall& c) { return c.name == "VARVAL"; })) {
+    std::string text = f->expression;
+    if (!inlineTimeVariables(s, f->valueWhere, variables, diags, text)) return false;
+    if (!expr::Expression::parse(text, f->valueWhere, s.subject(), diags, m.function)) return false;
+  }
   if (!bindDataCalls(model, m.function, f->valueWhere, s.subject(), diags)) return false;
   if (m.function.delayCount() > 0) {
     // A motion needs exact velocity and acceleration (time jets) of its function; the
@@ -178,7 +189,8 @@ bool motionFunction(StatementArguments& a, const Model& model, Motion& m, Diagno
   return true;
 }
 
-void buildMotion(const Statement& s, Model& model, Diagnostics& diags) {
+void buildMotion(const Statement& s, const std::vector<const Statement*>& variables, Model& model,
+                 Diagnostics& diags) {
   StatementArguments a(s, diags);
   Motion m;
   m.id = *s.id;
@@ -194,16 +206,17 @@ void buildMotion(const Statement& s, Model& model, Diagnostics& diags) {
     return;
   }
   if (onJoint ? !jointMotion(a, model, m) : !markerMotion(a, model, m, diags)) return;
-  if (!motionFunction(a, model, m, diags)) return;
+  if (!motionFunction(a, model, variables, m, diags)) return;
   model.motions.push_back(std::move(m));
 }
 
 }  // namespace
 
-void buildMotions(const std::vector<const Statement*>& statements, Model& model,
+void buildMotions(const std::vector<const Statement*>& statements,
+                  const std::vector<const Statement*>& variables, Model& model,
                   Diagnostics& diags) {
   for (const Statement* s : statements)
-    if (s->id) buildMotion(*s, model, diags);
+    if (s->id) buildMotion(*s, variables, model, diags);
 }
 
 }  // namespace openmss::model

@@ -12,8 +12,11 @@
 
 namespace openmss::model {
 
-// Model::motions. Needs every joint and marker (buildJoints).
-void buildMotions(const std::vector<const language::Statement*>& statements, Model& model,
+// Model::motions. Needs every joint and marker (buildJoints). `variables`: the VARIABLE
+// statements a FUNCTION may read through VARVAL (when they are functions of TIME;
+// motion_variables.hpp); other statements in the list are skipped.
+void buildMotions(const std::vector<const language::Statement*>& statements,
+                  const std::vector<const language::Statement*>& variables, Model& model,
                   Diagnostics& diags);
 
 }  // namespace openmss::model

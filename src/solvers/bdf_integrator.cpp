@@ -201,6 +201,8 @@ void BdfIntegrator::setWeights() {
   // effect within one step, flipped the 5 s spherical validation pendulum with WSTIFF).
   correctorWeight_ = errorWeight_.cwiseProduct(differentialMask_);
   errorWeight_.array() *= errorMask_.array();
+  // CORRECTOR=MODIFIED: converged when the unknowns of the error test are (ADAMS's definition).
+  if (settings_.modifiedCorrector) correctorWeight_ = errorWeight_;
 }
 
 void BdfIntegrator::noteWorst(const Eigen::VectorXd& g, const Eigen::VectorXd& dy) {

@@ -26,6 +26,10 @@ struct MultistepSettings {
   // it is re-formed only when cj has drifted or the corrector fails.
   bool patternGiven = false;
   bool pattern[10] = {true, false, false, false, true, false, false, false, true, false};
+  // CORRECTOR=MODIFIED (docs/integrators.md, "Corrector"): the corrector's convergence test
+  // weighs only the unknowns of the integration error test (I3: the displacements), not every
+  // differential unknown (ORIGINAL, the default).
+  bool modifiedCorrector = false;
 };
 
 }  // namespace openmss::solvers

@@ -185,11 +185,24 @@ int frictionCoefficients(const model::Friction& f, const FrictionKinematics<T>& 
   return 0;
 }
 
-// |(a, b)| with a zero derivative at the origin.
+// Rounding of the normal force's magnitudes (force units; docs/theory.md §13, "Normal force").
+// |v| has no derivative at v = 0, and a reaction component that vanishes in exact arithmetic is
+// round-off in the multipliers (1e-44 on the sliding block's torques): the Newton matrix then
+// took the slope sign(round-off) = +-1 in those multiplier columns while the residual,
+// symmetric about zero, has none. sqrt(|v|^2 + eps^2) - eps is smooth, has slope 0 at v = 0 and
+// differs from |v| by less than eps; eps = 1e-6 force units (at most 1e-6 N of normal force in
+// any UNITS, the dyne being the smallest force unit) is far below any physical load and far
+// above the multipliers' round-off at rest.
+inline constexpr double kNormalForceRounding = 1e-6;
+
+// sqrt(a^2 + b^2 + eps^2) - eps: |(a, b)| rounded at the origin by eps.
 template <class T>
-T planarMagnitude(const T& a, const T& b) {
-  const T s = a * a + b * b;
-  return valueOf(s) > 0.0 ? sqrtOf(s) : T(0.0);
+T roundedMagnitude(const T& squared, double eps) {
+  return sqrtOf(squared + eps * eps) - eps;
+}
+template <class T>
+T planarMagnitude(const T& a, const T& b, double eps) {
+  return roundedMagnitude(a * a + b * b, eps);
 }
 
 // The equivalent normal force N (force units) from the joint's reaction on I (force F and
@@ -205,23 +218,29 @@ T normalForce(const model::Friction& f, model::JointType type, const V3<T>& forc
   using JT = model::JointType;
   const double rf = f.useReactionForce ? 1.0 : 0.0, bm = f.useBendingMoment ? 1.0 : 0.0,
                tm = f.useTorsionalMoment ? 1.0 : 0.0, pl = f.usePreload ? 1.0 : 0.0;
-  const T fxy = planarMagnitude(force.x, force.y);
-  const T txy = planarMagnitude(torque.x, torque.y);
+  // Each term rounded by kNormalForceRounding in force units (a torque term by eps times its
+  // arm), so that N is smooth where a reaction component vanishes.
+  const double eps = kNormalForceRounding;
+  const T fxy = planarMagnitude(force.x, force.y, eps);
   T n = T(pl * f.preload);
   switch (type) {
     case JT::Translational:
-      n = n + rf * fxy + bm * txy / f.initialOverlap +
-          tm * planarMagnitude(torque.z, T(0.0)) / f.frictionArm;
+      n = n + rf * fxy +
+          bm * planarMagnitude(torque.x, torque.y, eps * f.initialOverlap) / f.initialOverlap +
+          tm * planarMagnitude(torque.z, T(0.0), eps * f.frictionArm) / f.frictionArm;
       break;
     case JT::Cylindrical:
-      n = n + rf * fxy + bm * txy / f.initialOverlap;
+      n = n + rf * fxy +
+          bm * planarMagnitude(torque.x, torque.y, eps * f.initialOverlap) / f.initialOverlap;
       break;
     case JT::Spherical:
-      n = n + rf * magnitudeOf(force);
+      n = n + rf * roundedMagnitude(dot(force, force), eps);
       break;
     default:  // revolute, Hooke, universal
-      n = n + rf * (fxy + planarMagnitude(force.z, T(0.0)) * (f.frictionArm / f.pinRadius)) +
-          bm * txy / f.bendingArm;
+      n = n +
+          rf * (fxy + planarMagnitude(force.z, T(0.0), eps * f.pinRadius / f.frictionArm) *
+                          (f.frictionArm / f.pinRadius)) +
+          bm * planarMagnitude(torque.x, torque.y, eps * f.bendingArm) / f.bendingArm;
       break;
   }
   return n;
