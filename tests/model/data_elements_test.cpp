@@ -102,15 +102,19 @@ TEST(DataElements, EveryInputErrorIsReportedInOnePass) {
       "bad.adm:8:35: error: SPLINE/4: the z values of a family of curves (first value of each "
       "Y) must increase. Order the Y= arguments by increasing z.",
       "bad.adm:9:11: error: SPLINE/5: SPLINE data from a FILE (BLOCK, CHANNEL) is not supported "
-      "yet. List the values in the data set with X=x1,...,xn and Y=y1,...,yn.",
+      "yet without a SPLINE_READ reader. List the values in the data set with X=x1,...,xn and "
+      "Y=y1,...,yn, or give ROUTINE=lib::name for a user SPLINE_READ that reads the file.",
       "bad.adm:10:43: error: MATRIX/1: VALUES has 3 numbers, but ROWS*COLUMNS = 6. Give every "
       "entry of the matrix.",
       "bad.adm:12:10: error: CURVE/1: MATRIX/2 has 2 columns; a CURVE needs 3 (x, y, z of each "
       "point). Give the points as rows x, y, z (z = 0 for a planar curve).",
       "bad.adm:13:10: error: CURVE/2: MATRIX/9 does not exist. Use the id of a MATRIX "
       "statement of this data set.",
-      "bad.adm:14:10: error: CURVE/3: FUNCTION=USER(...) curves (CURSUB) are not supported "
-      "yet. Define the curve with MATRIX=id (points or B-spline control points).",
+      "bad.adm:14:10: error: CURVE/3: FUNCTION=USER(...) needs the user subroutine CURSUB, and "
+      "no user library is named: the statement has no ROUTINE=lib::name and no default library "
+      "was given (openmss run --user-library LIB). Supply the library that defines CURSUB "
+      "(ROUTINE=lib::name on the statement, or openmss run --user-library LIB); "
+      "docs/user-subroutines.md says how to build one.",
       "bad.adm:15:47: error: SFORCE/1: AKISPL: SPLINE/99 does not exist. Use the id of a "
       "SPLINE statement of this data set.",
   };
@@ -142,7 +146,8 @@ TEST(DataElements, MotionFunctionsBindSplinesAndReportUnknownIds) {
 
 // Every SPLINE, MATRIX, STRING and CURVE of the validation corpus, through the data-element
 // builder alone (the files hold statements the solver does not support yet). The only
-// refusals are the user-subroutine curves (FUNCTION=USER, CURSUB).
+// refusals are the user-subroutine curves (FUNCTION=USER, CURSUB) whose library the corpus
+// does not hold (adrill_solver): each must name CURSUB and the library.
 TEST(DataElements, EveryCorpusDataElementBuilds) {
   const std::filesystem::path corpus = openmss::testing::corpusDir();
   if (!std::filesystem::exists(corpus)) GTEST_SKIP() << openmss::testing::corpusAbsentMessage();
@@ -168,7 +173,7 @@ TEST(DataElements, EveryCorpusDataElementBuilds) {
     Model model;
     buildDataElements(dataset, model, diags);
     for (const auto& d : diags.all()) {
-      EXPECT_NE(format(d).find("FUNCTION=USER(...) curves (CURSUB) are not supported"),
+      EXPECT_NE(format(d).find("cannot load the user library adrill_solver for CURSUB"),
                 std::string::npos)
           << format(d);
     }
