@@ -8,6 +8,7 @@
 // residual is bit-identical to the serial one for any thread count.
 
 #include <algorithm>
+#include <limits>
 
 #include "common/parallel_for.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -15,9 +16,13 @@
 namespace openmss::mechanics {
 namespace {
 
-// Below this many equations the rows cost less than handing them to a worker (a chain of 100
-// links has 500: about 0.1 ms of rows per residual on this machine class).
-constexpr size_t kParallelEquations = 256;
+// Off for every model size: measured on two cores, two threads made the chains slower than one
+// (100-link planar chain, 500 equations: 1.19 s against 0.78 s; 1000-link spatial chain:
+// 2.06 s against 1.75 s; docs/performance.md, "Re-measured after GSTIFF's I3 velocity test").
+// The hand-off and the serial second phase cost more than the rows save. The path stays, bit-
+// identical to the serial loop, for the next measurement; lower this bound only where one
+// shows a gain.
+constexpr size_t kParallelEquations = std::numeric_limits<size_t>::max();
 
 // Kinds whose geometry and gradient read only the marker frames and the equation's own
 // constants. Coupled (run-state turn counts), General (GCON expressions: shared scratch) and
