@@ -1,20 +1,24 @@
 #!/usr/bin/python3
 """CONTACT benchmark: N spheres falling into a box (docs/theory.md §6c, "Benchmark").
 
-    /usr/bin/python3 bench/contact_pile.py --openmss build/src/openmss [--mujoco PEER] 100
+    /usr/bin/python3 bench/contact_pile.py --openmss build/openmss [--mujoco PEER] 8 27 64
 
 Writes an ADAMS data set of N spheres (radius 0.05, mass 0.1) on a jittered grid above an open
 box (a floor and four walls, BOX solids on ground), one CONTACT per sphere against the box and
-one per pair of spheres (IMPACT, no friction), runs it with GSTIFF, and prints the wall time,
-the integration steps and the final mean height of the spheres. With --mujoco, the program
-bench/peers/mujoco_pile.cpp builds the same spheres and box in MuJoCo (soft contacts, RK4 at a
-fixed step) and its figures are printed beside ours. The pile is what the issue asks (100 and
+one per pair of spheres (IMPACT, no friction), runs it with GSTIFF, and prints the wall and CPU
+times (the CPU time of the child process: the figure to compare on a shared machine), the
+integration steps and the final mean height of the spheres (from the .req: one DISPLACEMENT
+request per sphere). With --keep DIR the data set and every output stay in DIR/N (compare two
+binaries' .req files there with cmp). With --mujoco, the program bench/peers/mujoco_pile.cpp
+(compiled to that path first when it is missing) builds the same spheres and box in MuJoCo
+(soft contacts, RK4 at a fixed step) and its figures are printed beside ours. The pile is what the issue asks (100 and
 1000 spheres); OpenMSS has one element per CONTACT statement, so N spheres cost N (N - 1) / 2
 pair elements and the 1000-sphere pile (499,500 statements) is measured only when asked.
 """
 import argparse
 import os
 import re
+import resource
 import subprocess
 import tempfile
 import time
@@ -75,7 +79,11 @@ def dataset(n):
         for j in range(i + 1, n):
             out.append(f"CONTACT/{cid}, IGEOM={(100 + i) * 10}, JGEOM={(100 + j) * 10}, {law}")
             cid += 1
-    out += ["ACCGRAV/KGRAV=-9.81", "END", ""]
+    # The outputs compared between binaries: the .req (6 digits) and the .res (every part's
+    # state and every CONTACT's force to the last bit).
+    for i in range(n):
+        out.append(f"REQUEST/{100 + i}, DISPLACEMENT, I={(100 + i) * 10}")
+    out += ["OUTPUT/REQSAVE", "RESULTS", "ACCGRAV/KGRAV=-9.81", "END", ""]
     return "\n".join(out), centres
 
 
@@ -86,15 +94,39 @@ def run_openmss(openmss, n, end, error, workdir):
     with open(os.path.join(workdir, "pile.acf"), "w") as f:
         f.write(f"pile.adm\npile\nINTEGRATOR/GSTIFF, ERROR={error:g}\n"
                 f"SIMULATE/DYNAMIC, END={end:g}, STEPS=10\nSTOP\n")
+    before = resource.getrusage(resource.RUSAGE_CHILDREN)
     start = time.perf_counter()
     proc = subprocess.run([openmss, "run", "pile.acf"], cwd=workdir, capture_output=True,
                           text=True)
     wall = time.perf_counter() - start
+    after = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
     m = re.search(r"reached t = (\S+) with (\d+) integration steps", proc.stdout + proc.stderr)
     if proc.returncode != 0 or not m:
         tail = (proc.stdout + proc.stderr).strip().splitlines()[-1:]
-        return {"wall": wall, "status": "failed", "note": tail}
-    return {"wall": wall, "steps": int(m.group(2)), "t": float(m.group(1)), "status": "ok"}
+        return {"wall": wall, "cpu": cpu, "status": "failed", "note": tail}
+    return {"wall": wall, "cpu": cpu, "steps": int(m.group(2)), "t": float(m.group(1)),
+            "status": "ok", "height": final_mean_height(os.path.join(workdir, "pile.req"), n)}
+
+
+def final_mean_height(req, n):
+    """Mean z of the spheres at the last output time of the .req: its last n lines are the
+    DISPLACEMENT records (x y z, ...) of the last time, one per sphere; nan when unreadable."""
+    try:
+        with open(req) as f:
+            lines = f.read().splitlines()
+        heights = [float(line.split()[2]) for line in lines[-n:]]
+    except (OSError, ValueError, IndexError):
+        return float("nan")
+    return sum(heights) / n
+
+
+def compile_mujoco(peer):
+    """Compiles bench/peers/mujoco_pile.cpp to `peer` when it is not there yet."""
+    if os.path.exists(peer):
+        return
+    source = os.path.join(os.path.dirname(os.path.abspath(__file__)), "peers", "mujoco_pile.cpp")
+    subprocess.run(["g++", "-std=c++20", "-O2", "-o", peer, source, "-lmujoco"], check=True)
 
 
 def run_mujoco(peer, n, end, dt):
@@ -103,7 +135,9 @@ def run_mujoco(peer, n, end, dt):
     args = [peer, str(n), str(k), f"{end:g}", f"{dt:g}"]
     proc = subprocess.run(args, capture_output=True, text=True)
     values = dict(line.split("=", 1) for line in proc.stdout.splitlines() if "=" in line)
-    return {"wall": float(values.get("wall", "nan")), "steps": int(values.get("steps", "0")),
+    return {"wall": float(values.get("wall", "nan")), "cpu": float(values.get("cpu", "nan")),
+            "steps": int(values.get("steps", "0")),
+            "height": float(values.get("mean_height", "nan")),
             "status": "ok" if proc.returncode == 0 else "failed"}
 
 
@@ -111,26 +145,37 @@ def main():
     p = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     p.add_argument("sizes", nargs="+", type=int)
     p.add_argument("--openmss", required=True)
-    p.add_argument("--mujoco", help="the compiled bench/peers/mujoco_pile.cpp")
+    p.add_argument("--mujoco", help="bench/peers/mujoco_pile.cpp compiled (compiled if missing)")
     p.add_argument("--end", type=float, default=0.5)
     p.add_argument("--error", type=float, default=1e-3)
     p.add_argument("--dt", type=float, default=1e-4, help="MuJoCo's fixed step")
+    p.add_argument("--keep", help="keep each size's data set and outputs in KEEP/N")
     args = p.parse_args()
+    if args.mujoco:
+        compile_mujoco(args.mujoco)
     for n in args.sizes:
-        with tempfile.TemporaryDirectory(prefix="openmss-pile-") as workdir:
+        if args.keep:
+            workdir = os.path.join(args.keep, str(n))
+            os.makedirs(workdir, exist_ok=True)
             r = run_openmss(os.path.abspath(args.openmss), n, args.end, args.error, workdir)
+        else:
+            with tempfile.TemporaryDirectory(prefix="openmss-pile-") as workdir:
+                r = run_openmss(os.path.abspath(args.openmss), n, args.end, args.error, workdir)
         pairs = n * (n - 1) // 2
         line = (f"pile N={n}: {n + pairs} CONTACT elements, OpenMSS GSTIFF ERROR={args.error:g} "
-                f"to {args.end:g} s: {r['status']} in {r['wall']:.2f} s")
+                f"to {args.end:g} s: {r['status']} in {r['wall']:.2f} s wall, "
+                f"{r['cpu']:.2f} s CPU")
         if r["status"] == "ok":
-            line += f", {r['steps']} steps, {1e3 * r['wall'] / max(r['steps'], 1):.3f} ms/step"
+            line += (f", {r['steps']} steps, {1e3 * r['cpu'] / max(r['steps'], 1):.3f} ms CPU/step"
+                     f", mean height {r['height']:.6f} m")
         else:
             line += f" ({r.get('note')})"
         print(line, flush=True)
         if args.mujoco:
-            q = run_mujoco(args.mujoco, n, args.end, args.dt)
-            print(f"pile N={n}: MuJoCo RK4 dt={args.dt:g}: {q['status']} in {q['wall']:.2f} s, "
-                  f"{q['steps']} steps", flush=True)
+            q = run_mujoco(os.path.abspath(args.mujoco), n, args.end, args.dt)
+            print(f"pile N={n}: MuJoCo RK4 dt={args.dt:g}: {q['status']} in {q['wall']:.2f} s "
+                  f"wall, {q['cpu']:.2f} s CPU, {q['steps']} steps, mean height "
+                  f"{q['height']:.6f} m", flush=True)
 
 
 if __name__ == "__main__":

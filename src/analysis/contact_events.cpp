@@ -11,11 +11,18 @@
 namespace openmss::analysis {
 namespace {
 
-// Whether contact c has any contact point in state y (the narrow phase on values).
+// Whether contact c has any contact point in state y (the narrow phase on values); `kin` the
+// marker states, shared by the contacts of one state.
+bool touches(const mechanics::MultibodySystem& s, const model::Contact& c,
+             mechanics::contact::ContactKinematics<double>& kin) {
+  return mechanics::contact::contactLoads<double>(s.model(), s.layout(), c, kin, false).points >
+         0;
+}
+
 bool touches(const mechanics::MultibodySystem& s, const model::Contact& c,
              const Eigen::VectorXd& y) {
-  return mechanics::contact::contactLoads<double>(s.model(), s.layout(), c, y.data(), false)
-             .points > 0;
+  mechanics::contact::ContactKinematics<double> kin(s.model(), s.layout(), y.data());
+  return touches(s, c, kin);
 }
 
 // The interpolated state made consistent as at the start of a run (as SENSOR events do,
@@ -37,12 +44,17 @@ void makeConsistent(const mechanics::MultibodySystem& s, double t, Eigen::Vector
 ContactEventIntegrator::ContactEventIntegrator(solvers::Integrator& inner,
                                                const mechanics::MultibodySystem& system,
                                                bool restartAtOnset)
-    : inner_(inner), system_(system), restartAtOnset_(restartAtOnset) {}
+    : inner_(inner),
+      system_(system),
+      restartAtOnset_(restartAtOnset),
+      slots_(system.model(), system.layout()) {}
 
 std::vector<bool> ContactEventIntegrator::touching(const Eigen::VectorXd& y) const {
   const auto& contacts = system_.model().contacts;
   std::vector<bool> out(contacts.size());
-  for (size_t k = 0; k < contacts.size(); ++k) out[k] = touches(system_, contacts[k], y);
+  mechanics::contact::ContactKinematics<double> kin(system_.model(), system_.layout(), y.data(),
+                                                    &slots_);
+  for (size_t k = 0; k < contacts.size(); ++k) out[k] = touches(system_, contacts[k], kin);
   return out;
 }
 

@@ -11,6 +11,7 @@
 #include <string>
 #include <vector>
 
+#include "mechanics/contact/contact_kinematics.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "solvers/integrator.hpp"
 
@@ -54,6 +55,8 @@ class ContactEventIntegrator final : public solvers::Integrator {
   solvers::Integrator& inner_;
   const mechanics::MultibodySystem& system_;
   bool restartAtOnset_;
+  // The bodies and markers the contacts read: touching() computes each state once per call.
+  mechanics::contact::ContactSlots slots_;
   std::vector<bool> state_;  // at inner_.t()
   std::vector<ContactEvent> events_;
 };

@@ -28,7 +28,8 @@ ForceElements::ForceElements(const model::Model& model) : model_(&model) {
   add(ForceElementKind::VectorForce, model.vectorForces.size());
   add(ForceElementKind::Friction, model.frictions.size());
   add(ForceElementKind::MultiPoint, model.nforces.size());
-  add(ForceElementKind::Contact, model.contacts.size());
+  add(ForceElementKind::Contact, model.contacts.size());  // the last: addContactsToResidual
+  if (!model.contacts.empty()) broadPhase_ = contact::ContactBroadPhase(model, layout_);
   for (const model::SpringDamper& s : model.springDampers) {
     double reference = 0.0;
     if (s.rotational) {

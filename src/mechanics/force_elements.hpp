@@ -16,6 +16,7 @@
 #include "mechanics/bound_function.hpp"
 #include "mechanics/expression_run_state.hpp"
 #include "mechanics/friction/joint_friction.hpp"
+#include "mechanics/contact/contact_broad_phase.hpp"
 #include "mechanics/contact/contact_loads.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/state_layout.hpp"
@@ -61,8 +62,11 @@ class ForceElements {
                         const DynamicReads<T>* reads = nullptr) const;
 
   // Subtracts every element's generalised force from the Newton-Euler rows of g.
+  // `derivativesOnly` (the caller reads the derivative parts of g only): the CONTACT elements
+  // whose two parts' states carry no derivative are left out; their derivatives are exactly zero.
   template <class T>
-  void addToResidual(double t, const T* y, T* g, const DynamicReads<T>* reads = nullptr) const;
+  void addToResidual(double t, const T* y, T* g, const DynamicReads<T>* reads = nullptr,
+                     bool derivativesOnly = false) const;
 
   // Force and torque of element e on the part of its I marker (atJ false) or of its J / JFLOAT
   // marker (atJ true), in ground; the torque is about that marker's origin (a JFLOAT marker
@@ -139,14 +143,31 @@ class ForceElements {
   template <class T>
   ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
-  ElementLoads<T> contactElementLoads(int k, const T* y) const;
+  ElementLoads<T> contactElementLoads(int k, const T* y) const {
+    contact::ContactKinematics<T> kin(*model_, layout_, y);
+    return contactElementLoads(k, kin);
+  }
+  template <class T>
+  ElementLoads<T> contactElementLoads(int k, contact::ContactKinematics<T>& kin) const;
+  // The CONTACT elements of a residual evaluation (they are the last elements): only those the
+  // shared broad phase finds near, with the marker states and poses they read computed once
+  // (theory §6c, "Shared kinematics"). The others add exactly zero.
+  template <class T>
+  void addContactsToResidual(const T* y, T* g, bool derivativesOnly) const;
   // The analysis under way (the run state's; the default before any).
   model::AnalysisMode analysisMode() const {
     return run_ != nullptr ? run_->status().mode : model::AnalysisStatus{}.mode;
   }
   template <class T>
   void applyToBody(int marker, const V3<T>& point, const V3<T>& force, const V3<T>& torque,
-                   bool hasForce, bool hasTorque, const T* y, T* g) const;
+                   bool hasForce, bool hasTorque, const T* y, T* g) const {
+    const int body = model_->parts[model_->markers[marker].part].body;
+    if (body >= 0)
+      applyAtPose(body, bodyPose(layout_, body, y), point, force, torque, hasForce, hasTorque, g);
+  }
+  template <class T>
+  void applyAtPose(int body, const BodyPose<T>& pose, const V3<T>& point, const V3<T>& force,
+                   const V3<T>& torque, bool hasForce, bool hasTorque, T* g) const;
 
   template <class T>
   static bool readBackThunk(const void* forces, const model::Measure& ms, double t, const T* y,
@@ -159,6 +180,9 @@ class ForceElements {
   // Pure scratch, overwritten by every evaluation: no result depends on earlier contents.
   mutable std::vector<double> scratchValues_, scratchGrad_;
   const ExpressionRunState* run_ = nullptr;  // cumulative angles, DELAY history (the session's)
+  // The CONTACT elements' shared broad phase, with its cache of the last positions (scratch:
+  // its answer is a pure function of the state, contact_broad_phase.hpp).
+  mutable contact::ContactBroadPhase broadPhase_;
 
  public:
   void setRunState(const ExpressionRunState* run) { run_ = run; }
@@ -341,14 +365,15 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
 }
 
 template <class T>
-ElementLoads<T> ForceElements::contactElementLoads(int k, const T* y) const {
+ElementLoads<T> ForceElements::contactElementLoads(int k,
+                                                   contact::ContactKinematics<T>& kin) const {
   const model::Contact& c = model_->contacts[k];
   // DYNAMICS_ONLY: friction in dynamic analyses only (ADAMS); the mode is the session's.
   const bool friction =
       c.friction == model::Contact::Friction::On ||
       (c.friction == model::Contact::Friction::DynamicsOnly &&
        analysisMode() == model::AnalysisMode::Dynamics);
-  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, y, friction);
+  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, kin, friction);
   ElementLoads<T> l;
   l.force = cl.force;
   l.torque = cl.torqueAtI;
@@ -453,12 +478,9 @@ void ForceElements::multiPointAction(int k, int marker, const T* y, V3<T>& force
 }
 
 template <class T>
-void ForceElements::applyToBody(int marker, const V3<T>& point, const V3<T>& force,
-                                const V3<T>& torque, bool hasForce, bool hasTorque, const T* y,
-                                T* g) const {
-  const int body = model_->parts[model_->markers[marker].part].body;
-  if (body < 0) return;
-  const BodyPose<T> pose = bodyPose(layout_, body, y);
+void ForceElements::applyAtPose(int body, const BodyPose<T>& pose, const V3<T>& point,
+                                const V3<T>& force, const V3<T>& torque, bool hasForce,
+                                bool hasTorque, T* g) const {
   T* gv = g + layout_.body(body) + StateLayout::kV;
   T* gw = g + layout_.body(body) + StateLayout::kW;
   // Force in ground; torque about the CM in body axes (the rows' convention, theory.md §4).
@@ -476,8 +498,8 @@ void ForceElements::applyToBody(int marker, const V3<T>& point, const V3<T>& for
 }
 
 template <class T>
-void ForceElements::addToResidual(double t, const T* y, T* g,
-                                  const DynamicReads<T>* reads) const {
+void ForceElements::addToResidual(double t, const T* y, T* g, const DynamicReads<T>* reads,
+                                  bool derivativesOnly) const {
   for (const ForceElementRef& e : elements_) {
     if (e.kind == ForceElementKind::MultiPoint) {
       std::vector<V3<T>> f, tq;
@@ -491,6 +513,7 @@ void ForceElements::addToResidual(double t, const T* y, T* g,
                   y, g);
       continue;
     }
+    if (e.kind == ForceElementKind::Contact) break;  // the last ones: addContactsToResidual
     const ElementLoads<T> l = loads(e, t, y, reads);
     const int im = iMarker(e);
     const MarkerState<T> mi = markerState(*model_, layout_, im, y);
@@ -498,6 +521,30 @@ void ForceElements::addToResidual(double t, const T* y, T* g,
     if (l.reactionMarker >= 0)
       applyToBody(l.reactionMarker, l.reactionPoint, l.reactionForce, l.reactionTorque,
                   l.hasForce, l.hasTorque, y, g);
+  }
+  if (!model_->contacts.empty()) addContactsToResidual(y, g, derivativesOnly);
+}
+
+template <class T>
+void ForceElements::addContactsToResidual(const T* y, T* g, bool derivativesOnly) const {
+  const std::vector<int>& near = broadPhase_.near(y);
+  contact::ContactKinematics<T> kin(*model_, layout_, y, &broadPhase_.slots());
+  // Which bodies' states carry a derivative (all, unless derivativesOnly on dual numbers).
+  const std::vector<char>& seeded = broadPhase_.seeded(y, derivativesOnly);
+  // In element order, as the loop over every element applied them: each body row receives the
+  // same sums in the same order, less the exact zeros of the elements apart.
+  for (const int k : near) {
+    const model::Contact& c = model_->contacts[k];
+    if (!c.active) continue;  // zero loads (contactLoads)
+    const int bi = model_->parts[model_->markers[c.iMarker].part].body;
+    const int bj = model_->parts[model_->markers[c.jMarker].part].body;
+    if (!broadPhase_.eitherSeeded(seeded, bi, bj)) continue;
+    const ElementLoads<T> l = contactElementLoads(k, kin);
+    if (bi >= 0)
+      applyAtPose(bi, kin.pose(bi), kin.marker(c.iMarker).p, l.force, l.torque, true, true, g);
+    if (bj >= 0)
+      applyAtPose(bj, kin.pose(bj), l.reactionPoint, l.reactionForce, l.reactionTorque, true,
+                  true, g);
   }
 }
 

@@ -67,7 +67,9 @@ void LocalNewtonMatrix::forceAndUserColours(double t, const Eigen::VectorXd& y,
         dyp[c].d = l.differential(c) ? cj : 0.0;
       }
       for (int r : forceAndUserRows_) dg[r] = D(0.0, 0.0);
-      system_.forceAndUserResidual(t, dy.data(), dyp.data(), dg.data());
+      // Only dg's derivatives are read below: the CONTACTs whose parts this colour does not
+      // seed are left out (their derivatives are exactly zero; theory §6c, "Shared kinematics").
+      system_.forceAndUserResidual(t, dy.data(), dyp.data(), dg.data(), true);
       for (int k = begin; k < end; ++k) {
         const int c = p.colourColumns[k];
         for (int e = p.columnStart[c]; e < p.columnStart[c + 1]; ++e)

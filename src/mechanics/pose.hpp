@@ -40,27 +40,32 @@ BodyPose<T> bodyPose(const StateLayout& layout, int b, const T* y) {
   return pose;
 }
 
+// The state of marker mk of a moving part whose body is at pose b (markerState's operations:
+// the same value to the bit, so callers may compute b once and share it).
 template <class T>
-MarkerState<T> markerState(const model::Model& m, const StateLayout& layout, int marker,
-                           const T* y) {
-  const model::Marker& mk = m.markers[marker];
-  const model::Part& part = m.parts[mk.part];
+MarkerState<T> markerStateOnBody(const model::Marker& mk, const BodyPose<T>& b) {
   MarkerState<T> s;
-  V3<T> sb = V3<T>::from(mk.position);
-  M3<T> ab = M3<T>::from(mk.orientation);
-  if (part.body < 0) {
-    s.p = sb;
-    s.a = ab;
-    s.pdot = {T(0.0), T(0.0), T(0.0)};
-    s.w = s.pdot;
-    return s;
-  }
-  BodyPose<T> b = bodyPose(layout, part.body, y);
+  const V3<T> sb = V3<T>::from(mk.position);
+  const M3<T> ab = M3<T>::from(mk.orientation);
   V3<T> sg = b.a * sb;
   s.p = b.r + sg;
   s.a = b.a * ab;
   s.pdot = b.v + cross(b.wg, sg);
   s.w = b.wg;
+  return s;
+}
+
+template <class T>
+MarkerState<T> markerState(const model::Model& m, const StateLayout& layout, int marker,
+                           const T* y) {
+  const model::Marker& mk = m.markers[marker];
+  const model::Part& part = m.parts[mk.part];
+  if (part.body >= 0) return markerStateOnBody(mk, bodyPose(layout, part.body, y));
+  MarkerState<T> s;
+  s.p = V3<T>::from(mk.position);
+  s.a = M3<T>::from(mk.orientation);
+  s.pdot = {T(0.0), T(0.0), T(0.0)};
+  s.w = s.pdot;
   return s;
 }
 

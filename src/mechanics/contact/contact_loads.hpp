@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "mechanics/contact/contact_kinematics.hpp"
 #include "mechanics/contact/contact_law.hpp"
 #include "mechanics/contact/narrow_phase.hpp"
 #include "mechanics/pose.hpp"
@@ -42,11 +43,25 @@ V3<double> markerOriginValue(const model::Model& m, const StateLayout& layout, i
   return r + rotationOf(e) * sb;
 }
 
+// The broad-phase test of two solids: their bounding spheres (about the reference markers'
+// origins, on values) overlap. One function for contactLoads and the shared broad phase
+// (contact_broad_phase.hpp), so both take the same decision to the bit.
+inline bool boundingSpheresOverlap(const V3<double>& ci, double ri, const V3<double>& cj,
+                                   double rj) {
+  const V3<double> gap = ci - cj;
+  const double reach = ri + rj;
+  return dot(gap, gap) <= reach * reach;
+}
+
 // `withFriction` is false when COULOMB_FRICTION is OFF, or DYNAMICS_ONLY outside dynamics.
+// `kin` gives the marker states (shared by the elements of one evaluation, or computed afresh:
+// contact_kinematics.hpp); the result does not depend on which.
 template <class T>
 ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
-                             const model::Contact& c, const T* y, bool withFriction) {
+                             const model::Contact& c, ContactKinematics<T>& kin,
+                             bool withFriction) {
   ContactLoads<T> out;
+  const T* y = kin.y();
   // Broad phase: bounding spheres about the reference markers, on values, before any work on
   // T. With no pair near, the loads are zero in a neighbourhood of y (partials zero too).
   std::vector<V3<double>> iCentres, jCentres;
@@ -56,25 +71,24 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
     jCentres.push_back(markerOriginValue(m, layout, s.marker, y));
   std::vector<std::pair<size_t, size_t>> near;
   for (size_t p = 0; p < c.iSolids.size(); ++p)
-    for (size_t q = 0; q < c.jSolids.size(); ++q) {
-      const V3<double> gap = iCentres[p] - jCentres[q];
-      const double reach = c.iSolids[p].boundingRadius + c.jSolids[q].boundingRadius;
-      if (dot(gap, gap) <= reach * reach) near.emplace_back(p, q);
-    }
+    for (size_t q = 0; q < c.jSolids.size(); ++q)
+      if (boundingSpheresOverlap(iCentres[p], c.iSolids[p].boundingRadius, jCentres[q],
+                                 c.jSolids[q].boundingRadius))
+        near.emplace_back(p, q);
   if (!c.active || near.empty()) {
     out.iOrigin = V3<T>::from(markerOriginValue(m, layout, c.iMarker, y));
     out.jOrigin = V3<T>::from(markerOriginValue(m, layout, c.jMarker, y));
     return out;
   }
-  const MarkerState<T> mi = markerState(m, layout, c.iMarker, y);
-  const MarkerState<T> mj = markerState(m, layout, c.jMarker, y);
+  const MarkerState<T> mi = kin.marker(c.iMarker);
+  const MarkerState<T> mj = kin.marker(c.jMarker);
   out.iOrigin = mi.p;
   out.jOrigin = mj.p;
   // The frames of the solids of the near pairs only, each once.
   std::vector<SolidFrame<T>> iFrames(c.iSolids.size()), jFrames(c.jSolids.size());
   std::vector<char> iDone(c.iSolids.size(), 0), jDone(c.jSolids.size(), 0);
   auto frameOf = [&](const model::ContactSolid& s) {
-    const MarkerState<T> st = markerState(m, layout, s.marker, y);
+    const MarkerState<T> st = kin.marker(s.marker);
     return SolidFrame<T>{st.p, st.a};
   };
   std::vector<ContactPoint<T>> points;
@@ -99,6 +113,14 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
   }
   out.points = static_cast<int>(points.size());
   return out;
+}
+
+// One element on its own, every marker state computed afresh (read-backs, events).
+template <class T>
+ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
+                             const model::Contact& c, const T* y, bool withFriction) {
+  ContactKinematics<T> kin(m, layout, y);
+  return contactLoads(m, layout, c, kin, withFriction);
 }
 
 }  // namespace openmss::mechanics::contact
