@@ -15,8 +15,7 @@ namespace {
 // marker states, shared by the contacts of one state.
 bool touches(const mechanics::MultibodySystem& s, const model::Contact& c,
              mechanics::contact::ContactKinematics<double>& kin) {
-  return mechanics::contact::contactLoads<double>(s.model(), s.layout(), c, kin, false).points >
-         0;
+  return mechanics::contact::contactLoads<double>(s.model(), s.layout(), c, kin, false).points > 0;
 }
 
 bool touches(const mechanics::MultibodySystem& s, const model::Contact& c,

@@ -22,7 +22,7 @@ namespace {
 // above (its contacts are apart: the broad phase leaves them out).
 std::string pileDeck() {
   const double z5 = 0.049 + 0.0700;
-  const double centres[6][3] = {{0, 0, 0.049},      {0.099, 0, 0.049},      {0, 0.099, 0.049},
+  const double centres[6][3] = {{0, 0, 0.049},          {0.099, 0, 0.049},    {0, 0.099, 0.049},
                                 {0.099, 0.099, 0.0495}, {0.0495, 0.0495, z5}, {1, 1, 1}};
   std::string d =
       "pile jacobian\nPART/1, GROUND\nMARKER/10, PART=1, QP=-1,-1,-1\n"
@@ -73,8 +73,8 @@ TEST(ContactPile, NewtonMatrixMatchesDenseAndCentralDifferences) {
   // neighbours, 4 under the top sphere) and the near ones (the far sphere's 6 are apart).
   int touching = 0;
   for (const model::Contact& c : m.contacts)
-    touching += mechanics::contact::contactLoads<double>(m, s.layout(), c, y.data(), true).points >
-                0;
+    touching +=
+        mechanics::contact::contactLoads<double>(m, s.layout(), c, y.data(), true).points > 0;
   EXPECT_EQ(touching, 12);
   mechanics::contact::ContactBroadPhase broad(m, s.layout());
   // Near: the 8 pairs in touch and 5 spheres against the floor (its bounding sphere, radius 3
@@ -117,9 +117,10 @@ TEST(ContactPile, NewtonMatrixMatchesDenseAndCentralDifferences) {
     scale = std::max(scale, e.col(c).cwiseAbs().maxCoeff());
     ++columns;
   }
-  std::printf("contact pile: max |sparse - central difference| %.3e of max entry %.3e over %d "
-              "columns\n",
-              worst, scale, columns);
+  std::printf(
+      "contact pile: max |sparse - central difference| %.3e of max entry %.3e over %d "
+      "columns\n",
+      worst, scale, columns);
   EXPECT_EQ(columns, 6 * StateLayout::kPerBody);
   // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches (as
   // contact_model_test.cpp's single contacts).
