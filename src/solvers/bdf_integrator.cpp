@@ -5,6 +5,8 @@
 #include <limits>
 #include <utility>
 
+#include "solvers/bdf_polynomials.hpp"
+
 namespace openmss::solvers {
 namespace {
 
@@ -30,6 +32,20 @@ constexpr double kStalledChange = 1e-1;
 constexpr double kRoundOffUlps = 1000.0;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
+// ... and so does a step that converged on an older matrix at a contraction rate above this
+// (docs/integrators.md, "Cost per step"; Hairer and Wanner's RADAU5 re-forms its Jacobian when
+// the rate exceeds 0.001). The relative convergence target (kCorrectorShare) asks for ~1e-5 of
+// the correction, so the iteration count is set by the rate: on the 100-link chains a matrix
+// kept over ~70 steps converged at 0.07 (4-6 iterations per step), a fresh one at 5e-6 (2).
+// Only where the step's own error set the target: on HMAX-held steps kTightChange does, the
+// changes are near round-off and their ratio says nothing of the matrix (the nine ADAMS joint
+// cases, HMAX = 1e-5, re-formed it at a third of their 500000 steps, 1.7 -> 3.9 s of CPU).
+// A refresh costs about 11 residual evaluations with their solves there. Measured (GSTIFF, 10 s,
+// residuals + 11 x Jacobians; planar / spatial at 1e-5 and 1e-6): never 7637 / 8893 / 3929 /
+// 5115; 0.01 7970 / 6200 (planar); 0.03 7206 / 6308 / 3462 / 3757; 0.05 6915 / 6081 / 3227 / 3708;
+// 0.1 7211 / 6548 / 4009 / 3931. Tip errors at 0.05 (m): 1.6e-7 / 2.3e-7 / 9.9e-7 / 1.1e-7, never
+// 7.2e-7 / 1.6e-7 / 9.9e-7 / 1.1e-7: the spread any change of the step sequence gives.
+constexpr double kRefreshRate = 0.05;
 // Singular configurations (docs/integrators.md, "Singular configurations"): where the
 // constraint Jacobian loses rank (the flat position of a four-bar) the Newton matrix is
 // singular in the multipliers along the null space of C^T. A modified Newton iteration on a
@@ -86,36 +102,8 @@ constexpr double kGrowthAgreement = 1.3;
 // 8 steps 1.3e-5 / 6.0e-3 m (not monotonic in the factor: the estimate is noisy, see there).
 constexpr double kVelocityTestSteps = 2.0;
 
-// Weights of the value (w) and derivative (dw) at x of the polynomial through (nodes, values):
-// p(x) = sum w_j y_j, p'(x) = sum dw_j y_j. x must differ from every node.
-void lagrangeAt(const double* nodes, int n, double x, double* w, double* dw) {
-  for (int j = 0; j < n; ++j) {
-    double num = 1.0, den = 1.0, s = 0.0;
-    for (int m = 0; m < n; ++m) {
-      if (m == j) continue;
-      num *= x - nodes[m];
-      den *= nodes[j] - nodes[m];
-      s += 1.0 / (x - nodes[m]);
-    }
-    w[j] = num / den;
-    dw[j] = w[j] * s;
-  }
-}
-
-// BDF weights: derivative at nodes[0] of the polynomial through all n nodes.
-void bdfWeights(const double* nodes, int n, double* a) {
-  a[0] = 0.0;
-  for (int m = 1; m < n; ++m) a[0] += 1.0 / (nodes[0] - nodes[m]);
-  for (int j = 1; j < n; ++j) {
-    double num = 1.0, den = 1.0;
-    for (int m = 0; m < n; ++m) {
-      if (m == j) continue;
-      if (m != 0) num *= nodes[0] - nodes[m];
-      den *= nodes[j] - nodes[m];
-    }
-    a[j] = num / den;
-  }
-}
+using bdf::bdfWeights;
+using bdf::lagrangeAt;
 
 }  // namespace
 
@@ -171,6 +159,7 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   }
   jacobianCurrent_ = false;
   haveJacobian_ = false;
+  refreshNext_ = false;
   consecutiveErrorFailures_ = 0;
   velocityTested_ = velocityTestMask_.sum() > 0.0;
   velocityError_ = 0.0;
@@ -188,7 +177,8 @@ bool BdfIntegrator::withinRoundOff(double cj) {
   constexpr double kEps = 2.220446049250313e-16;
   roundOffFloor_ = (kRoundOffUlps * kEps) * (1.0 + yNew_.array().abs()) *
                    (1.0 + (std::max(1.0, cj) - 1.0) * velocityMask_.array());
-  return ((dy_.array().abs() - roundOffFloor_.array()) * differentialMask_.array()).maxCoeff() <= 0.0;
+  return ((dy_.array().abs() - roundOffFloor_.array()) * differentialMask_.array()).maxCoeff() <=
+         0.0;
 }
 
 void BdfIntegrator::setWeights() {
@@ -233,7 +223,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   velocityRejected_ = false;
   const double tNew = t_ + h;
   const int nh = static_cast<int>(ts_.size());
-  double nodes[8], w[8], dw[8], a[8];
+  double nodes[8] = {}, w[8], dw[8], a[8];
 
   // Predictor: polynomial through the last k+1 solutions, or a Taylor step at start-up.
   double errorRatio;  // local error / (corrector - predictor), exact for variable steps
@@ -253,7 +243,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     // last min(k+1, nh) solutions (the predictor's), so the corrector has constant-step
     // coefficients whatever the step history.
     const int npts = std::min(k + 1, nh);
-    double hist[8], wv[8], dwv[8];
+    double hist[8] = {}, wv[8], dwv[8];
     for (int j = 0; j < npts; ++j) hist[j] = ts_[j];
     equallySpaced_.resize(static_cast<size_t>(k));
     for (int j = 1; j <= k; ++j) {
@@ -310,9 +300,10 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     }
     cjJacobian_ = cj;
     haveJacobian_ = true;
+    refreshNext_ = false;
     jacobianCurrent_ = true;
   };
-  if (!haveJacobian_ || std::abs(cj / cjJacobian_ - 1.0) > kCjDrift) refresh();
+  if (!haveJacobian_ || refreshNext_ || std::abs(cj / cjJacobian_ - 1.0) > kCjDrift) refresh();
 
   for (int attempt = 0; attempt < 2; ++attempt) {
     yNew_ = yPred_;
@@ -322,6 +313,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     double firstResidual = 0.0, lastResidual = 0.0, firstSize = 0.0;
     double firstRaw = 0.0, lastRaw = 0.0;  // the same, unscaled (see kRawResidualNoise)
     bool converged = false;
+    bool onRelativeTarget = false;  // converged on the step's own error, not kTightChange
     for (int it = 0; it < settings_.maxit; ++it) {
       if (settings_.patternGiven && (it == 0 ? !jacobianCurrent_ : settings_.pattern[it % 10])) {
         // PATTERN: re-form at this iterate (refresh() linearises at yPred_).
@@ -364,8 +356,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       // (noted when an attempt fails, below); not computed per iteration otherwise.
       if (observingIterations()) {
         noteWorst(g_, dy_);
-        notifyIteration({tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_,
-                         lastWorstChange_});
+        notifyIteration(
+            {tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_, lastWorstChange_});
       }
       if (it > 0) rate = size / std::max(previous, 1e-300);
       if (it == 0) firstSize = size;
@@ -381,10 +373,10 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         break;
       }
       if (it > 0 && rate < 0.9) {
-        const double target =
-            std::max(kTightChange, kCorrectorShare * errorRatio * fromPredictor);
-        if (rate / (1.0 - rate) * size <= target) {
+        const double relative = kCorrectorShare * errorRatio * fromPredictor;
+        if (rate / (1.0 - rate) * size <= std::max(kTightChange, relative)) {
           converged = true;
+          onRelativeTarget = relative > kTightChange;
           break;
         }
       }
@@ -402,6 +394,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     if (converged && !jacobianCurrent_ && firstSize > kResidualCheckFloor &&
         lastResidual > kResidualStall * firstResidual)
       converged = false;  // stale matrix, residual left standing: retry on a fresh one
+    if (converged && onRelativeTarget && !jacobianCurrent_ && rate > kRefreshRate)
+      refreshNext_ = true;
     if (converged) break;
     if (jacobianCurrent_ || attempt == 1) {
       noteWorst(g_, dy_);
@@ -482,14 +476,16 @@ void BdfIntegrator::rejectOnDisplacement(double h, double err) {
 // so a split needs a state struct (left for a change that can be checked on its own).
 bool BdfIntegrator::step(double tout) {
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
-  const double hmin = settings_.hmin > 0 ? settings_.hmin
-                                         : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
+  const double hmin =
+      settings_.hmin > 0 ? settings_.hmin : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
   // Attempts until one step is accepted (or the step size falls below HMIN).
   while (t_ < tout - eps) {
     double h = std::min(h_, settings_.hmax);
     // Land exactly on the output time; avoid leaving a sliver for the next step.
-    if (t_ + h >= tout - eps) h = tout - t_;
-    else if (t_ + 2.0 * h > tout) h = 0.5 * (tout - t_);
+    if (t_ + h >= tout - eps)
+      h = tout - t_;
+    else if (t_ + 2.0 * h > tout)
+      h = 0.5 * (tout - t_);
     bool newtonFailed = false;
     double err = 0.0;
     using Event = BdfStepInfo::Event;
@@ -564,8 +560,13 @@ bool BdfIntegrator::step(double tout) {
       if (ratio >= capped && (rLow >= capped || rLow == 0.0) && (rHigh >= capped || rHigh == 0.0)) {
         // The step is held at HMAX whatever the order: take the order with the smallest error.
         double eNow = std::max(err, 1e-300);
-        if (eHigh > 0 && eHigh < eNow) { nextK = k_ + 1; ratio = rHigh; }
-        else if (eLow > 0 && eLow < 0.5 * eNow) { nextK = k_ - 1; ratio = rLow; }
+        if (eHigh > 0 && eHigh < eNow) {
+          nextK = k_ + 1;
+          ratio = rHigh;
+        } else if (eLow > 0 && eLow < 0.5 * eNow) {
+          nextK = k_ - 1;
+          ratio = rLow;
+        }
       } else if (rLow > ratio && rLow >= rHigh) {
         nextK = k_ - 1;
         ratio = rLow;
@@ -630,14 +631,20 @@ bool BdfIntegrator::step(double tout) {
       nextK = k_;
       ratio = ownRatio;
     }
-    if (nextK != k_) { k_ = nextK; stepsAtOrder_ = 0; }
+    if (nextK != k_) {
+      k_ = nextK;
+      stepsAtOrder_ = 0;
+    }
     // The I3 velocity test bounds the next step (at the estimate of the order just taken).
     if (velocityTested_)
-      ratio = std::min(ratio, 0.9 * std::pow(1.0 / std::max(velocityError_, 1e-10),
-                                             1.0 / (lastStepOrder_ + 1)));
-    if (ratio >= 1.5) h_ = h * std::min(ratio, stabilityJump ? ratio : 2.0);
-    else if (ratio < 1.0) h_ = h * std::max(ratio, 0.5);
-    else h_ = std::max(h, h_);
+      ratio = std::min(
+          ratio, 0.9 * std::pow(1.0 / std::max(velocityError_, 1e-10), 1.0 / (lastStepOrder_ + 1)));
+    if (ratio >= 1.5)
+      h_ = h * std::min(ratio, stabilityJump ? ratio : 2.0);
+    else if (ratio < 1.0)
+      h_ = h * std::max(ratio, 0.5);
+    else
+      h_ = std::max(h, h_);
     h_ = std::min(h_, settings_.hmax);
     stats_.order = k_;
     stats_.stepSize = h;
@@ -653,7 +660,7 @@ void BdfIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
     yp = yp_;
     return;
   }
-  double nodes[8], w[8], dw[8];
+  double nodes[8] = {}, w[8], dw[8];
   for (int j = 0; j < n; ++j) nodes[j] = ts_[j];
   // At a node the Lagrange weights are a unit vector; the derivative still needs the
   // polynomial, so evaluate a hair away from the node in that case.

@@ -4,17 +4,16 @@
 // solutions, BDF corrector solved by modified Newton, local error estimated from the
 // predictor-corrector difference on displacements, steps landing on output times.
 
+#include <Eigen/Dense>
 #include <deque>
 #include <limits>
 #include <string>
 #include <vector>
 
-#include <Eigen/Dense>
-
 #include "solvers/dae_problem.hpp"
 #include "solvers/dense_linear_solver.hpp"
-#include "solvers/klu_linear_solver.hpp"
 #include "solvers/integrator.hpp"
+#include "solvers/klu_linear_solver.hpp"
 #include "solvers/multistep_settings.hpp"
 
 namespace openmss::solvers {
@@ -128,11 +127,14 @@ class BdfIntegrator final : public Integrator {
   // diagonal_[l] = y[t_n, ..., t_n-l], the divided differences through the newest l+1 accepted
   // solutions (l <= KMAX+2); previousDiagonal_ is the one of the step before (work storage).
   std::vector<Eigen::VectorXd> diagonal_, previousDiagonal_;
-  std::vector<Eigen::VectorXd> equallySpaced_;     // fixed-coefficient history (GSTIFF)
+  std::vector<Eigen::VectorXd> equallySpaced_;  // fixed-coefficient history (GSTIFF)
   Eigen::VectorXd rowScale_, colScale_;
   double cjJacobian_ = 0.0;
   bool jacobianCurrent_ = false;
   bool haveJacobian_ = false;
+  // The last step converged slowly on an older matrix (kRefreshRate in the .cpp): re-form it
+  // at the next attempt.
+  bool refreshNext_ = false;
 
   // Work vectors (no allocation in the step loop).
   Eigen::VectorXd yNew_, ypNew_, yPred_, base_, g_, dy_, predictorDiff_;
