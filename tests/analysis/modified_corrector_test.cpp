@@ -22,26 +22,16 @@
 
 #include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
-#include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/integrator_test_models.hpp"
 
 namespace openmss::analysis {
 namespace {
 
-constexpr double kX1 = 0.867348640604551746;
-constexpr double kY1 = 0.497701050476373918;
-
-const char* kPendulum =
-    "DAE test-set pendulum\n"
-    "UNITS/ SYSTEM=NONE\n"
-    "PART/1, GROUND\n"
-    "MARKER/10, PART=1\n"
-    "PART/2, MASS=1, CM=20, IP=1e-10,1e-10,1e-10, VX=0, VY=1, VZ=0\n"
-    "MARKER/20, PART=2, QP=1,0,0\n"
-    "MARKER/21, PART=2, QP=0,0,0\n"
-    "JOINT/1, REVOLUTE, I=21, J=10\n"
-    "ACCGRAV/ JGRAV=-1\n";
+using test::kPendulum;
+constexpr double kX1 = test::kPendulumX1;
+constexpr double kY1 = test::kPendulumY1;
 
 struct Outcome {
   double x = 0, y = 0;
@@ -49,19 +39,10 @@ struct Outcome {
 };
 
 Outcome integrate(double error, bool fixedCoefficients, bool modified) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(std::string(kPendulum) + "END\n", "pendulum.adm", ds, d);
-  model::Model m;
-  EXPECT_TRUE(model::buildModel(ds, m, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
-  mechanics::MultibodySystem s(m);
-  Eigen::VectorXd y = s.initialState(), yp;
-  mechanics::removeRedundantConstraints(s, y);
-  EXPECT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged);
-  mechanics::solveVelocities(s, 0.0, y);
-  EXPECT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
-  MultibodyDae dae(s);
+  const auto mechanism = test::assemble(kPendulum);
+  const Eigen::VectorXd& y = mechanism->y;
+  const Eigen::VectorXd& yp = mechanism->yp;
+  MultibodyDae dae(*mechanism->system);
   solvers::MultistepSettings settings;
   settings.error = error;
   settings.hmax = 0.1;
@@ -126,7 +107,7 @@ TEST(ModifiedCorrector, IsRefusedOnOtherIntegratorsAtItsColumn) {
   auto build = [](const std::string& integrator, model::Model& m) {
     language::Dataset ds;
     Diagnostics d;
-    language::readDatasetText(std::string(kPendulum) + integrator + "\nEND\n", "p.adm", ds, d);
+    language::readDatasetText(test::beforeEnd(kPendulum, integrator + "\n"), "p.adm", ds, d);
     model::buildModel(ds, m, d);
     std::string errors;
     for (const auto& x : d.all())

@@ -58,6 +58,16 @@ inline const char* const kStiffSpring =
     "SPRINGDAMPER/1, TRANSLATIONAL, I=20, J=10, K=1e8, C=2e4, LENGTH=1\n"
     "END\n";
 
+// `text`, a data set of this file (it ends in END), with `statements` inserted before its END:
+// the same line numbers for the mechanism and the added statements right after it.
+inline std::string beforeEnd(const std::string& text, const std::string& statements) {
+  const std::string end = "END\n";
+  EXPECT_TRUE(text.size() >= end.size() &&
+              text.compare(text.size() - end.size(), end.size(), end) == 0)
+      << "the data set must end in END";
+  return text.substr(0, text.size() - end.size()) + statements + end;
+}
+
 struct Mechanism {
   model::Model model;
   std::unique_ptr<mechanics::MultibodySystem> system;

@@ -19,6 +19,7 @@
 #include "model/model_builder.hpp"
 #include "output/request_file_reader.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/built_model.hpp"
 #include "support/cli_run.hpp"
 #include "support/newton_matrix_check.hpp"
 #include "support/validation_data.hpp"
@@ -31,12 +32,7 @@ const std::string kC = OPENMSS_TEST_C_ROUTINES;
 const std::string kF77 = OPENMSS_TEST_F77_ROUTINES;
 
 bool build(const std::string& text, model::Model& m, std::string* messages) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "u.adm", ds, d);
-  const bool ok = model::buildModel(ds, m, d) && !d.hasErrors();
-  for (const auto& x : d.all()) *messages += format(x) + "\n";
-  return ok;
+  return testing::readAndBuildModel(text, "u.adm", m, messages);
 }
 
 // A 2 kg block on a translational joint along z, released at DZ = 1.5 on a spring of stiffness

@@ -17,6 +17,7 @@
 #include "model/model_builder.hpp"
 #include "output/request_file_reader.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/built_model.hpp"
 #include "support/cli_run.hpp"
 #include "support/newton_matrix_check.hpp"
 
@@ -27,12 +28,7 @@ const std::string kC = OPENMSS_TEST_C_ROUTINES;
 const std::string kF77 = OPENMSS_TEST_F77_ROUTINES;
 
 bool build(const std::string& text, model::Model& m, std::string* messages) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "f.adm", ds, d);
-  const bool ok = model::buildModel(ds, m, d) && !d.hasErrors();
-  for (const auto& x : d.all()) *messages += format(x) + "\n";
-  return ok;
+  return testing::readAndBuildModel(text, "f.adm", m, messages);
 }
 
 // A free 2 kg body, displaced, turned and moving, held by FIELD/1 between its CM marker 20

@@ -16,6 +16,7 @@
 #include "model/model_builder.hpp"
 #include "output/request_file_reader.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/built_model.hpp"
 #include "support/cli_run.hpp"
 #include "support/newton_matrix_check.hpp"
 #include "user/user_library.hpp"
@@ -27,12 +28,7 @@ const std::string kLibrary = OPENMSS_TEST_GSE_LIBRARY;
 
 // Builds a data set; the diagnostics' text (one per line) in *messages.
 bool build(const std::string& text, model::Model& m, std::string* messages) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "g.adm", ds, d);
-  const bool ok = model::buildModel(ds, m, d) && !d.hasErrors();
-  for (const auto& x : d.all()) *messages += format(x) + "\n";
-  return ok;
+  return testing::readAndBuildModel(text, "g.adm", m, messages);
 }
 
 const char* kHeader =

@@ -10,6 +10,7 @@
 
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
+#include "support/built_model.hpp"
 #include "support/cli_run.hpp"
 
 namespace openmss {
@@ -19,15 +20,10 @@ const std::string kC = OPENMSS_TEST_C_ROUTINES;
 const std::string kF77 = OPENMSS_TEST_F77_ROUTINES;
 
 bool build(const std::string& spline, model::Model& m, std::string* messages) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(
+  return testing::readAndBuildModel(
       "s\nPART/1, GROUND\n" + spline +
           "VARIABLE/1, FUNCTION=AKISPL(TIME, 0, 5) + CUBSPL(TIME, 0, 5, 1)\nEND\n",
-      "s.adm", ds, d);
-  const bool ok = model::buildModel(ds, m, d) && !d.hasErrors();
-  for (const auto& x : d.all()) *messages += format(x) + "\n";
-  return ok;
+      "s.adm", m, messages);
 }
 
 TEST(SplineReader, ReaderGivesTheSplineOfTheListedValues) {
