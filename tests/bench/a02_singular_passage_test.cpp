@@ -168,7 +168,13 @@ void expectWithinBenchmark(const std::string& integrator, double error,
 TEST(A02SingularPassage, Gstiff) { expectWithinBenchmark("GSTIFF", 1e-8); }
 TEST(A02SingularPassage, GstiffSi2) { expectWithinBenchmark("SI2_GSTIFF", 1e-6); }
 TEST(A02SingularPassage, Wstiff) { expectWithinBenchmark("WSTIFF", 1e-8); }
-TEST(A02SingularPassage, Dstiff) { expectWithinBenchmark("DSTIFF", 1e-6); }
+// DSTIFF (IDA) with its own convergence test (docs/integrators.md, "DSTIFF"): at ERROR = 1e-8 it
+// stopped at the first flat passage (t = 0.717 s) before; measured now 2.1e-4 m at 1e-6 and
+// 1.6e-6 m at 1e-8 over all outputs.
+TEST(A02SingularPassage, Dstiff) {
+  expectWithinBenchmark("DSTIFF", 1e-6);
+  expectWithinBenchmark("DSTIFF", 1e-8);
+}
 TEST(A02SingularPassage, MersonAtTheLoosestAndTightestError) {
   expectWithinBenchmark("MERSON", 1e-4);
   expectWithinBenchmark("MERSON", 1e-8);  // stopped at the second flat passage before
