@@ -21,8 +21,8 @@ namespace openmss::solvers {
 // the index-2 and index-3 unknowns from the error test in the same way (Brenan, Campbell and
 // Petzold, ch. 5); IDASetSuppressAlg only covers the algebraic ones.
 constexpr double kUncontrolledTolerance = 1e20;
-// Singular configurations (docs/integrators.md, "DSTIFF", "Singular passages"): IDA's Newton
-// convergence test rejects every iteration whose average rate exceeds 0.9. Near a kinematic
+// Singular configurations (docs/integrators.md, "DSTIFF and ABAM", Newton convergence): IDA's
+// Newton convergence test rejects every iteration whose average rate exceeds 0.9. Near a kinematic
 // singularity (the flat row of four-bars of IFToMM A02) the Newton matrix is nearly singular
 // along the mechanism's extra degrees of freedom and the iteration, having driven the
 // residual to round-off, keeps making changes of one size: the residual's round-off mapped
@@ -36,12 +36,12 @@ constexpr double kRawResidualNoise = 1e-6;
 // change, is below this share of the tolerance (IDASetNonlinConvCoef; IDA's default is
 // DASSL's 0.33). BdfIntegrator asks 1e-4 of the step's local error (kCorrectorShare) for the
 // same reason: a corrector stopped short leaves a remainder that the next steps' predictors
-// extrapolate. On A02 (N = 4, ERROR = 1e-8) the remainder along the flat passage's extra degrees
-// of freedom inflated the error estimates of the couplers' velocities, which cut the steps
+// extrapolate. On A02 (N = 4, ERROR = 1e-8) the remainder along the flat passage's extra
+// degrees of freedom inflated the error estimates of the couplers' velocities, which cut the steps
 // until one landed on the flat configuration itself, where the noise of the nearly singular
 // solves fails the error test at any step (stopped at t = 0.717 s; with 1e-4 and the round-off
 // rule above it reaches 10 s within 1.6e-6 m; 1e-2 and 1e-3 still stopped there, 1e-4 without
-// the round-off rule at t = 0.717 s, docs/integrators.md "DSTIFF").
+// the round-off rule at t = 0.717 s; docs/integrators.md, "DSTIFF and ABAM").
 constexpr double kNewtonConvergence = 1e-4;
 
 struct IdaIntegrator::Engine {
