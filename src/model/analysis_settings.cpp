@@ -218,12 +218,21 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
     }
   }
   // Combinations: SI2 belongs to the BDF family; NEWMARK must be unconditionally stable.
+  // DSTIFF always runs on the SI2 form (docs/integrators.md, "DSTIFF and ABAM"), so SI2 is
+  // accepted with it, and an explicit I3, which it cannot honour, is reported.
   if (settings.formulation == F::Si2 && settings.type != T::Gstiff &&
-      settings.type != T::Wstiff && !s.args.empty()) {
+      settings.type != T::Wstiff && settings.type != T::Dstiff && !s.args.empty()) {
     const language::Argument* a = s.find("SI2") ? s.find("SI2") : &s.args.front();
-    r.error(*a, std::string("the SI2 formulation applies to GSTIFF and WSTIFF, not to ") +
-                    integratorTypeName(settings.type),
-            "Write I3, or choose GSTIFF or WSTIFF.");
+    r.error(*a,
+            std::string("the SI2 formulation applies to GSTIFF, WSTIFF and DSTIFF, not to ") +
+                integratorTypeName(settings.type),
+            "Write I3, or choose GSTIFF, WSTIFF or DSTIFF.");
+  }
+  if (settings.type == T::Dstiff && settings.formulation == F::I3 && s.find("I3")) {
+    diags.warning(s.find("I3")->where, s.subject(),
+                  "DSTIFF always runs on the SI2 formulation (on I3 its global error does not "
+                  "follow ERROR; docs/integrators.md, \"DSTIFF and ABAM\"): I3 has no effect",
+                  "Write SI2 or remove I3 to silence this warning.");
   }
   // MODIFIED on HHT and NEWMARK ignores the multipliers' changes (ADAMS), which their
   // corrector here never tests: accepted, the same corrector. DSTIFF (IDA's own test), ABAM and

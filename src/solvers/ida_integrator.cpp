@@ -10,6 +10,7 @@
 #include <sundials/sundials_linearsolver.h>
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
+#include <sunnonlinsol/sunnonlinsol_newton.h>
 
 #include "solvers/klu_linear_solver.hpp"
 
@@ -20,6 +21,28 @@ namespace openmss::solvers {
 // the index-2 and index-3 unknowns from the error test in the same way (Brenan, Campbell and
 // Petzold, ch. 5); IDASetSuppressAlg only covers the algebraic ones.
 constexpr double kUncontrolledTolerance = 1e20;
+// Singular configurations (docs/integrators.md, "DSTIFF and ABAM", Newton convergence): IDA's
+// Newton convergence test rejects every iteration whose average rate exceeds 0.9. Near a kinematic
+// singularity (the flat row of four-bars of IFToMM A02) the Newton matrix is nearly singular
+// along the mechanism's extra degrees of freedom and the iteration, having driven the
+// residual to round-off, keeps making changes of one size: the residual's round-off mapped
+// through the nearly singular matrix. IDA then cuts the step to its floor and stops. As in
+// BdfIntegrator (kResidualNoise, kRawResidualNoise), a stalled iteration whose balanced
+// residual, or whose unscaled residual, has fallen below this share of its value at the
+// predictor has converged as far as the linear solves allow.
+constexpr double kResidualNoise = 1e-6;
+constexpr double kRawResidualNoise = 1e-6;
+// IDA's Newton iteration stops when its estimated remainder, rate / (1 - rate) times the last
+// change, is below this share of the tolerance (IDASetNonlinConvCoef; IDA's default is
+// DASSL's 0.33). BdfIntegrator asks 1e-4 of the step's local error (kCorrectorShare) for the
+// same reason: a corrector stopped short leaves a remainder that the next steps' predictors
+// extrapolate. On A02 (N = 4, ERROR = 1e-8) the remainder along the flat passage's extra
+// degrees of freedom inflated the error estimates of the couplers' velocities, which cut the steps
+// until one landed on the flat configuration itself, where the noise of the nearly singular
+// solves fails the error test at any step (stopped at t = 0.717 s; with 1e-4 and the round-off
+// rule above it reaches 10 s within 1.6e-6 m; 1e-2 and 1e-3 still stopped there, 1e-4 without
+// the round-off rule at t = 0.717 s; docs/integrators.md, "DSTIFF and ABAM").
+constexpr double kNewtonConvergence = 1e-4;
 
 struct IdaIntegrator::Engine {
   DaeProblem* problem = nullptr;
@@ -29,6 +52,15 @@ struct IdaIntegrator::Engine {
   N_Vector weights = nullptr, localErrors = nullptr;
   SUNMatrix matrix = nullptr;
   SUNLinearSolver linear = nullptr;
+  // IDA's Newton solver, ours to free, and IDA's own convergence test on it, which
+  // convergenceTest() consults first (the test and its data, IDA's memory, as IDA installed
+  // them on the solver).
+  SUNNonlinearSolver newton = nullptr;
+  SUNNonlinSolConvTestFn idaTest = nullptr;
+  void* idaTestData = nullptr;
+  // Largest balanced and unscaled residual at the predictor of the current Newton solve.
+  double firstResidual = 0.0, firstRaw = 0.0;
+  double previousChange = 0.0;  // weighted norm of the last change of the current solve
   // Newton matrix at the last Jacobian call, and its balanced factorisation.
   Eigen::MatrixXd jac;
   double cj = 1.0;
@@ -46,6 +78,7 @@ struct IdaIntegrator::Engine {
 
   ~Engine() {
     if (ida) IDAFree(&ida);
+    if (newton) SUNNonlinSolFree(newton);
     if (linear) SUNLinSolFree(linear);
     if (matrix) SUNMatDestroy(matrix);
     for (N_Vector v : {yy, yp, id, atol, work, weights, localErrors})
@@ -163,6 +196,39 @@ struct IdaIntegrator::Engine {
     return worst;
   }
 
+  // IDA's convergence test, then the round-off rule of kResidualNoise on the iterations it
+  // does not accept: those it rejects for their average rate and those that stall (this
+  // change no smaller than 0.9 of the last; IDA would go on to MAXIT and fail). gWork holds
+  // the residual at the iterate the change was computed from (IDA evaluates it just before
+  // the linear solve), rowScale the balance of the matrix in use. IDA's verdict is only ever
+  // overturned towards success at round-off residual, so a run that never stalls there takes
+  // exactly IDA's steps.
+  static int convergenceTest(SUNNonlinearSolver nls, N_Vector ycor, N_Vector del, realtype tol,
+                             N_Vector ewt, void* user) {
+    auto* e = static_cast<Engine*>(user);
+    const int verdict = e->idaTest(nls, ycor, del, tol, ewt, e->idaTestData);
+    int m = 0;
+    SUNNonlinSolGetCurIter(nls, &m);
+    const double size = largestWeighted(del, ewt);
+    const double raw = e->gWork.cwiseAbs().maxCoeff();
+    const double balanced = e->rowScale.size() == e->gWork.size()
+                                ? e->rowScale.cwiseProduct(e->gWork).cwiseAbs().maxCoeff()
+                                : raw;
+    const double previous = e->previousChange;
+    e->previousChange = size;
+    if (m == 0) {
+      e->firstResidual = balanced;
+      e->firstRaw = raw;
+      return verdict;
+    }
+    const bool stalled = verdict == SUN_NLS_CONV_RECVR || !(size < 0.9 * previous);
+    if (verdict != SUN_NLS_SUCCESS && stalled && std::isfinite(size) &&
+        (balanced <= kResidualNoise * e->firstResidual || raw <= kRawResidualNoise * e->firstRaw)) {
+      return SUN_NLS_SUCCESS;
+    }
+    return verdict;
+  }
+
   static void errorHandler(int, const char*, const char*, char* message, void* user) {
     static_cast<Engine*>(user)->lastMessage = message;  // reported through failure()
   }
@@ -198,6 +264,14 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   IDASetErrHandlerFn(e.ida, &Engine::errorHandler, &e);
   IDAInit(e.ida, &Engine::residual, t0, e.yy, e.yp);
   IDASetUserData(e.ida, &e);
+  // Our own Newton solver object, so that its convergence test can be wrapped: IDA installs
+  // its test when the solver is attached, and convergenceTest() calls it first.
+  e.newton = SUNNonlinSol_Newton(e.yy, e.context);
+  IDASetNonlinearSolver(e.ida, e.newton);
+  const auto* content = static_cast<SUNNonlinearSolverContent_Newton>(e.newton->content);
+  e.idaTest = content->CTest;
+  e.idaTestData = content->ctest_data;
+  SUNNonlinSolSetConvTestFn(e.newton, &Engine::convergenceTest, &e);
   // ERROR is both relative and absolute, as GSTIFF's ERROR (1 + |y|) weighting.
   IDASVtolerances(e.ida, settings_.error, e.atol);
   IDASetId(e.ida, e.id);
@@ -231,6 +305,7 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
                                           : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3)));
   if (settings_.hinit > 0) IDASetInitStep(e.ida, settings_.hinit);
   IDASetMaxNonlinIters(e.ida, std::max(1, settings_.maxit));
+  IDASetNonlinConvCoef(e.ida, kNewtonConvergence);
 
   t_ = tPrevious_ = t0;
   y_ = y0;

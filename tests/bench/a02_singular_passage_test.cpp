@@ -168,10 +168,27 @@ void expectWithinBenchmark(const std::string& integrator, double error,
 TEST(A02SingularPassage, Gstiff) { expectWithinBenchmark("GSTIFF", 1e-8); }
 TEST(A02SingularPassage, GstiffSi2) { expectWithinBenchmark("SI2_GSTIFF", 1e-6); }
 TEST(A02SingularPassage, Wstiff) { expectWithinBenchmark("WSTIFF", 1e-8); }
-TEST(A02SingularPassage, Dstiff) { expectWithinBenchmark("DSTIFF", 1e-6); }
+// DSTIFF (IDA) with its own convergence test (docs/integrators.md, "DSTIFF"): at ERROR = 1e-8 it
+// stopped at the first flat passage (t = 0.717 s) before; measured now 2.1e-4 m at 1e-6 and
+// 1.6e-6 m at 1e-8 over all outputs.
+TEST(A02SingularPassage, Dstiff) {
+  expectWithinBenchmark("DSTIFF", 1e-6);
+  expectWithinBenchmark("DSTIFF", 1e-8);
+}
 TEST(A02SingularPassage, MersonAtTheLoosestAndTightestError) {
   expectWithinBenchmark("MERSON", 1e-4);
   expectWithinBenchmark("MERSON", 1e-8);  // stopped at the second flat passage before
+}
+// HHT (docs/integrators.md, "HHT and NEWMARK") passes all ten flat passages; its global error
+// is that of a second-order method whose ERROR bounds the local position error only, so it
+// falls as ERROR^(2/3) (measured largest B0 error: 7.7e-2 m at 1e-6, 3.9e-3 m at 1e-8, 7.4e-4 m
+// at 1e-9). It is a smooth phase error, not made at the passages, and not the numerical damping
+// (at 1e-6, t = 10 s: 1.9e-2 m at ALPHA = -0.1, 2.1e-2 m at -0.3). It meets the benchmark's
+// 1e-3 m from ERROR = 1e-9. At 1e-8 the bound is 1e-2 m, the measured 3.9e-3 m with a factor
+// 2.5 of room: a regression test of the passages, not the benchmark.
+TEST(A02SingularPassage, Hht) {
+  expectWithinBenchmark("HHT", 1e-8, 1e-2);
+  expectWithinBenchmark("HHT", 1e-9);
 }
 // The I3 velocity test (docs/integrators.md, "The I3 velocity test") brings I3 to the
 // benchmark's 1e-3 m at ERROR = 1e-6. Measured at N = 4, 10 s (without the test -> with it):
