@@ -10,7 +10,7 @@ packages=(
   libsundials-dev        # IDA (DSTIFF) and CVODE's Adams method (ABAM) integrators
   libxml2-dev            # the results file (.res, XML): output/results_file*.cpp
   libgtest-dev libgmock-dev  # unit and validation tests
-  gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/element_routines.f)
+  gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/*.f); the FORTRAN unit of SAVSUB/RELSUB (src/user/fortran_units)
   libbenchmark-dev       # micro-benchmarks in bench/
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
   # The Python package openmss (python/, docs/python.md), run by Debian's /usr/bin/python3,

@@ -256,7 +256,7 @@ std::vector<StatementSpec> buildStatementTable() {
   t.push_back(statement("GEAR", R, {integer("JOINTS", 2, 2), integer("CV")}));
   t.push_back(statement("COUPLER", R,
                         {integer("JOINTS", 2, 3), word("TYPE", {"T", "R"}, 2, 3),
-                         real("SCALES", 1, 3), expression("FUNCTION"), routine()}));
+                         real("SCALES", 1, 3), expression("FUNCTION"), words("ROUTINE", 3)}));
   t.push_back(statement("PTCV", R,
                         {integer("I"), integer("JFLOAT"), integer("CURVE"), integer("RM"),
                          triple("DISP"), integer("ICM"), real("VEL")}));

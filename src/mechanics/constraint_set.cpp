@@ -425,7 +425,8 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
     const model::Coupler& c = model.couplers[k];
     ConstraintEquation e = coupledEquation(model, c.joints);
     e.coupler = k;
-    e.label = "sum of scaled joint displacements";
+    e.label = c.user ? "COUSUB phi = 0" : "sum of scaled joint displacements";
+    e.userCoupler = c.user.get();
     for (size_t p = 0; p < c.joints.size(); ++p)
       e.terms.push_back(coupledTerm(model, c.joints[p], static_cast<int>(p), c.rotation[p],
                                     c.scales[p]));

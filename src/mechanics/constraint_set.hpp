@@ -14,6 +14,7 @@
 #include "common/curve_projection.hpp"
 #include "common/vec3.hpp"
 #include "mechanics/pose.hpp"
+#include "mechanics/user_coupler_value.hpp"
 #include "model/model.hpp"
 
 namespace openmss::mechanics {
@@ -87,6 +88,9 @@ struct ConstraintEquation {
   // geometry() receives the frames of iMarker, jMarker, then these.
   std::vector<int> moreMarkers;
   std::vector<CoupledTerm> terms;
+  // Coupled, COUPLER with FUNCTION=USER: the equation is the routine's phi of the terms'
+  // displacements (q - reference; their scales are unused), user_coupler_value.hpp.
+  const user::CouplerRoutine* userCoupler = nullptr;
   // RackPin and Screw: travel per radian (PD/2, PITCH/2pi) and the equation's value at the
   // data set's configuration, so that the data set satisfies it; the value is taken modulo
   // one turn's travel (2 pi ratio), which tracks cumulative pinion/screw angles without state.
@@ -210,6 +214,8 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
     }
     case K::Coupled: {
       S sum(0.0);
+      S displacements[3] = {S(0.0), S(0.0), S(0.0)};
+      int n = 0;
       for (const ConstraintEquation::CoupledTerm& term : eq.terms) {
         const Frame<S>& fi = frames[2 * term.pair];
         const Frame<S>& fj = frames[2 * term.pair + 1];
@@ -222,8 +228,10 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
         } else {
           q = dot(fj.a.c[2], fi.p - fj.p);
         }
+        if (eq.userCoupler && n < 3) displacements[n++] = q - term.reference;
         sum = sum + term.scale * (q - term.reference);
       }
+      if (eq.userCoupler) return userCouplerValue(*eq.userCoupler, displacements, n);
       return sum;
     }
     case K::General:

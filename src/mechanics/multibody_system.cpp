@@ -202,6 +202,7 @@ double MultibodySystem::coupledAngle(const ConstraintEquation& eq, int term,
   one.terms = {eq.terms[static_cast<std::size_t>(term)]};
   one.terms[0].scale = 1.0;
   one.terms[0].reference = 0.0;
+  one.userCoupler = nullptr;  // the angle itself, not a user coupler's phi of it
   return geometryValue(one, y);
 }
 

@@ -391,6 +391,7 @@ void MultibodySystem::addSForces(double t, const T* y, T* g) const {
 
 template <class T>
 void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
+  userCouplerClock().store(t, std::memory_order_relaxed);  // COUSUB's TIME argument
   const int nb = layout_.bodies;
   const Eigen::Vector3d& grav = model_->gravity;
   for (int b = 0; b < nb; ++b) {

@@ -1,5 +1,7 @@
 #include "model/coupling_builder.hpp"
 
+#include "model/user_coupler_binding.hpp"
+
 namespace openmss::model {
 namespace {
 
@@ -35,10 +37,19 @@ void buildCoupler(const Statement& s, Model& model, Diagnostics& diags) {
     diags.error(s.where, s.subject(), "JOINTS is missing", "Give JOINTS=<id>,<id>[,<id>].");
     return;
   }
-  if (s.has("FUNCTION"))
-    diags.error(s.find("FUNCTION")->where, s.subject(),
-                "FUNCTION=USER(...) couplers (CPLSUB) are not supported yet",
-                "Give the linear relation with SCALES= instead.");
+  // FUNCTION=USER(...): COUSUB's phi replaces the linear relation (user_coupler_binding.cpp).
+  const bool user = s.has("FUNCTION");
+  if (user && scales) {
+    diags.error(scales->where, s.subject(),
+                "SCALES with FUNCTION=USER(...): COUSUB gives the whole constraint",
+                "Remove SCALES, or FUNCTION to use the linear relation.");
+    return;
+  }
+  if (!user && s.has("ROUTINE")) {
+    diags.error(s.find("ROUTINE")->where, s.subject(), "ROUTINE= without FUNCTION=USER(...)",
+                "Add FUNCTION=USER(r1[,...,r30]) or remove ROUTINE=.");
+    return;
+  }
   const size_t n = joints->values.size();
   bool ok = true;
   for (size_t k = 0; k < n; ++k) {
@@ -75,6 +86,11 @@ void buildCoupler(const Statement& s, Model& model, Diagnostics& diags) {
       ok = false;
     }
     c.rotation.push_back(rotation);
+  }
+  if (user) {
+    c.scales.assign(n, 1.0);  // unused: the equation is COUSUB's phi
+    if (ok && bindUserCoupler(s, model, c, diags)) model.couplers.push_back(std::move(c));
+    return;
   }
   // SCALES: r1 q1 + r2 q2 [+ r3 q3] = 0; with one value fewer than joints, r1 = 1.
   const size_t ns = scales ? scales->values.size() : 0;

@@ -2,10 +2,11 @@
 // SAVSUB and RELSUB (docs/user-subroutines.md, "SAVSUB and RELSUB"): SAVE/STATES and
 // SAVE/SYSTEM call the default user library's SAVSUB so that the user's code can put its own
 // data into the save file; RELOAD calls RELSUB with those bytes. ADAMS passes a FORTRAN unit
-// number; OpenMSS passes, as IUNIT, a POSIX file descriptor open on a scratch file: the C
-// routine writes its bytes with write(2) (SAVSUB) or reads them with read(2) (RELSUB), from
-// the start. C style only: `void Savsub(int IUNIT, int* IERR)`, `void Relsub(int IUNIT,
-// int* IERR)` (a FORTRAN unit is not a descriptor). Each call runs under the crash guard.
+// number. C style (`void Savsub(int IUNIT, int* IERR)`, `void Relsub(int IUNIT, int* IERR)`,
+// tried first): IUNIT is a POSIX file descriptor open on a scratch file, from its start, for
+// write(2) (SAVSUB) or read(2) (RELSUB). FORTRAN (`SAVSUB(IUNIT, IERR)`, gfortran): IUNIT is a
+// FORTRAN unit connected to that file (FORM='UNFORMATTED', ACCESS='SEQUENTIAL') by the FORTRAN
+// units module and closed after the call. Each call runs under the crash guard.
 
 #include <optional>
 #include <string>

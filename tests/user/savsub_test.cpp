@@ -29,10 +29,11 @@ const char* kFall =
     "REQUEST/1, FUNCTION=USER(0)\nREQUEST/2, DISPLACEMENT, I=20, J=10\nOUTPUT/ REQSAVE\nEND\n";
 
 std::vector<output::RequestFileStep> study(const std::string& name,
-                                           const std::vector<std::string>& acf) {
+                                           const std::vector<std::string>& acf,
+                                           const std::string& library = OPENMSS_TEST_SAVSUB) {
   const fs::path dir = scratch(name);
   write(dir / "m.adm", kFall);
-  user::setDefaultLibrary(OPENMSS_TEST_SAVSUB);  // `openmss run --user-library LIB`
+  user::setDefaultLibrary(library);  // `openmss run --user-library LIB`
   commands::SessionOptions options;
   options.outputDirectory = dir.string();
   options.echoDiagnostics = false;
@@ -52,17 +53,24 @@ std::vector<output::RequestFileStep> study(const std::string& name,
   return req ? req->steps : std::vector<output::RequestFileStep>{};
 }
 
-TEST(SavsubRelsub, UserDataContinuesAfterReloadAsIfNeverStopped) {
+// Returns the counter's rows after RELOAD relative to its first row (5 values).
+std::vector<double> expectContinues(const std::string& library, const std::string& tag) {
   // Uninterrupted: 0, 0.2, ..., 2 (the library's counter is a process global: the first study
   // starts it from wherever the process left it, so each study is compared in differences).
-  const auto plain = study("savsub-plain", {"SIMULATE/DYNAMICS, END=1, STEPS=5",
-                                            "SIMULATE/DYNAMICS, END=2, STEPS=5", "STOP"});
-  const auto reloaded =
-      study("savsub-reload", {"SIMULATE/DYNAMICS, END=1, STEPS=5", "SAVE/STATES, FILE=s.sav",
-                              "SIMULATE/DYNAMICS, END=1.6, STEPS=3", "RELOAD/STATES, FILE=s.sav",
-                              "SIMULATE/DYNAMICS, END=2, STEPS=5", "STOP"});
-  ASSERT_EQ(plain.size(), 11u);
-  ASSERT_EQ(reloaded.size(), 6u + 3u + 5u);
+  const auto plain = study("savsub-plain" + tag, {"SIMULATE/DYNAMICS, END=1, STEPS=5",
+                                                  "SIMULATE/DYNAMICS, END=2, STEPS=5", "STOP"},
+                           library);
+  const auto reloaded = study(
+      "savsub-reload" + tag,
+      {"SIMULATE/DYNAMICS, END=1, STEPS=5", "SAVE/STATES, FILE=s.sav",
+       "SIMULATE/DYNAMICS, END=1.6, STEPS=3", "RELOAD/STATES, FILE=s.sav",
+       "SIMULATE/DYNAMICS, END=2, STEPS=5", "STOP"},
+      library);
+  std::vector<double> counts;
+  if (plain.size() != 11u || reloaded.size() != 14u) {
+    ADD_FAILURE() << plain.size() << " " << reloaded.size();
+    return counts;
+  }
   // The counter counts from its value at the first row of each study.
   const double plainStart = plain[0].rows[0][0], reloadedStart = reloaded[0].rows[0][0];
   int compared = 0;
@@ -73,12 +81,28 @@ TEST(SavsubRelsub, UserDataContinuesAfterReloadAsIfNeverStopped) {
     // Bit-identical: the states are restored exactly (docs/save-format.md) and the counter by
     // RELSUB; without RELSUB it would be 3 ahead (the detour's three output steps).
     EXPECT_EQ(a.rows[0][0] - reloadedStart, b.rows[0][0] - plainStart) << k;
+    counts.push_back(a.rows[0][0] - reloadedStart);
     for (int c = 0; c < 6; ++c, ++compared) EXPECT_EQ(a.rows[1][c], b.rows[1][c]) << k << c;
   }
   EXPECT_EQ(compared, 30);
   // The detour counted on: its rows continue the counter past the saved value.
   EXPECT_EQ(reloaded[8].rows[0][0] - reloadedStart, 8.0);
   EXPECT_EQ(reloaded[9].rows[0][0] - reloadedStart, 6.0);
+  return counts;
+}
+
+TEST(SavsubRelsub, UserDataContinuesAfterReloadAsIfNeverStopped) {
+  const std::vector<double> c = expectContinues(OPENMSS_TEST_SAVSUB, "");
+  EXPECT_EQ(c.size(), 5u);
+}
+
+// The FORTRAN library (savsub_routines.f): SAVSUB writes an unformatted record to the unit
+// OpenMSS connected, RELSUB reads it back; the same counts as the C library's.
+TEST(SavsubRelsub, FortranSavsubAndRelsubMatchTheCRoutines) {
+  const std::vector<double> c = expectContinues(OPENMSS_TEST_SAVSUB, "-c");
+  const std::vector<double> f = expectContinues(OPENMSS_TEST_SAVSUB_F77, "-f77");
+  ASSERT_EQ(c.size(), 5u);
+  EXPECT_EQ(f, c);
 }
 
 }  // namespace
