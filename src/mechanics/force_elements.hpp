@@ -139,7 +139,7 @@ class ForceElements {
   template <class T>
   ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
-  ElementLoads<T> contactElementLoads(int k, const T* y) const;
+  ElementLoads<T> contactElementLoads(int k, double t, const T* y) const;
   // The analysis under way (the run state's; the default before any).
   model::AnalysisMode analysisMode() const {
     return run_ != nullptr ? run_->status().mode : model::AnalysisStatus{}.mode;
@@ -341,14 +341,14 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
 }
 
 template <class T>
-ElementLoads<T> ForceElements::contactElementLoads(int k, const T* y) const {
+ElementLoads<T> ForceElements::contactElementLoads(int k, double t, const T* y) const {
   const model::Contact& c = model_->contacts[k];
   // DYNAMICS_ONLY: friction in dynamic analyses only (ADAMS); the mode is the session's.
   const bool friction =
       c.friction == model::Contact::Friction::On ||
       (c.friction == model::Contact::Friction::DynamicsOnly &&
        analysisMode() == model::AnalysisMode::Dynamics);
-  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, y, friction);
+  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, y, friction, t);
   ElementLoads<T> l;
   l.force = cl.force;
   l.torque = cl.torqueAtI;
@@ -370,7 +370,7 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
     case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
     case ForceElementKind::MultiPoint: return {};  // multiPointLoads
-    case ForceElementKind::Contact: return contactElementLoads(e.index, y);
+    case ForceElementKind::Contact: return contactElementLoads(e.index, t, y);
   }
   return {};
 }

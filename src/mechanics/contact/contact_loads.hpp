@@ -5,6 +5,7 @@
 // part through the I marker's origin and, equal and opposite, on J's part through the J marker's
 // origin.
 
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -43,9 +44,12 @@ V3<double> markerOriginValue(const model::Model& m, const StateLayout& layout, i
 }
 
 // `withFriction` is false when COULOMB_FRICTION is OFF, or DYNAMICS_ONLY outside dynamics.
+// `t` is the time user laws are called at; NaN asks for the contact points only
+// (pointNormalForce).
 template <class T>
 ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
-                             const model::Contact& c, const T* y, bool withFriction) {
+                             const model::Contact& c, const T* y, bool withFriction,
+                             double t = std::numeric_limits<double>::quiet_NaN()) {
   ContactLoads<T> out;
   // Broad phase: bounding spheres about the reference markers, on values, before any work on
   // T. With no pair near, the loads are zero in a neighbourhood of y (partials zero too).
@@ -89,9 +93,9 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
     const V3<T> vj = mj.pdot + cross(mj.w, p.point - mj.p);
     const V3<T> vrel = vi - vj;
     const T approach = -dot(vrel, p.normal);  // the rate of the penetration
-    const T fn = normalForce(c, p.depth, approach) * p.weight;
+    const T fn = pointNormalForce(c, t, p, approach) * p.weight;
     V3<T> f = p.normal * fn;
-    if (withFriction) f += frictionForce(c, fn, vrel - p.normal * dot(vrel, p.normal));
+    if (withFriction) f += pointFrictionForce(c, t, p, fn, vrel - p.normal * dot(vrel, p.normal));
     out.force += f;
     out.torqueAtI += cross(p.point - mi.p, f);
     out.torqueAtJ -= cross(p.point - mj.p, f);
