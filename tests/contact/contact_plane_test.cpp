@@ -23,6 +23,19 @@ namespace {
 
 constexpr double kG = 9.81;
 
+// build() of contact_support.hpp, but a PLANE's warning (not drawn by the viewer) is expected:
+// only errors fail the test.
+model::Model build(const std::string& text) {
+  language::Dataset ds;
+  Diagnostics d;
+  language::readDatasetText(text, "contact.adm", ds, d);
+  model::Model m;
+  EXPECT_TRUE(model::buildModel(ds, m, d));
+  for (const auto& x : d.all())
+    if (x.severity == Severity::Error) ADD_FAILURE() << format(x);
+  return m;
+}
+
 // The floor: the top face z = 0 of a large ground BOX, or a PLANE through the ground origin
 // (with or without a rectangle).
 const char* kBoxFloor =
