@@ -25,7 +25,7 @@ constexpr double kG = 9.81;
 
 // build() of contact_support.hpp, but a PLANE's warning (not drawn by the viewer) is expected:
 // only errors fail the test.
-model::Model build(const std::string& text) {
+model::Model buildPlane(const std::string& text) {
   language::Dataset ds;
   Diagnostics d;
   language::readDatasetText(text, "contact.adm", ds, d);
@@ -84,10 +84,10 @@ TEST(ContactPlane, SphereBouncesAndRestsOnAPlaneAsOnALargeBox) {
   };
   for (const Case c : {Case{0.1, 0.3, -1.0, 0.02, 1e-4}, Case{0.1001, 0.0, 0.0, 1.0, 1e-2}}) {
     const std::vector<Sample> box =
-        simulate(build(ballDeck(kBoxFloor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
+        simulate(buildPlane(ballDeck(kBoxFloor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
     for (const char* floor : {kPlaneFloor, kBoundedPlaneFloor}) {
       const std::vector<Sample> plane =
-          simulate(build(ballDeck(floor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
+          simulate(buildPlane(ballDeck(floor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
       size_t n = 0;
       const double worst = worstDifference(plane, box, n);
       std::printf("sphere on %s PLANE vs BOX (%s): max difference %.2e over %zu samples\n",
@@ -125,8 +125,8 @@ TEST(ContactPlane, CylinderRightsItselfOnAPlaneAsOnALargeBox) {
            "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=100, DMAX=1e-3, "
            "EXPONENT=1.5\nACCGRAV/KGRAV=-9.81\nEND\n";
   };
-  const std::vector<Sample> box = simulate(build(deck(kBoxFloor)), 0.5, 1e-2, 1e-8, 1e-3);
-  const std::vector<Sample> plane = simulate(build(deck(kPlaneFloor)), 0.5, 1e-2, 1e-8, 1e-3);
+  const std::vector<Sample> box = simulate(buildPlane(deck(kBoxFloor)), 0.5, 1e-2, 1e-8, 1e-3);
+  const std::vector<Sample> plane = simulate(buildPlane(deck(kPlaneFloor)), 0.5, 1e-2, 1e-8, 1e-3);
   size_t n = 0;
   const double worst = worstDifference(plane, box, n);
   std::printf("cylinder on a PLANE vs BOX: max difference %.2e over %zu samples\n", worst, n);
@@ -162,7 +162,7 @@ std::string inclineDeck(double phi) {
 
 TEST(ContactPlane, BlockSlidesDownAnInclinedPlaneWithTheDynamicCoefficient) {
   const double phi = 35.0 * std::numbers::pi / 180.0;
-  const std::vector<Sample> run = simulate(build(inclineDeck(phi)), 1.0, 1e-2, 1e-7, 1e-3);
+  const std::vector<Sample> run = simulate(buildPlane(inclineDeck(phi)), 1.0, 1e-2, 1e-7, 1e-3);
   ASSERT_EQ(run.size(), 101u);
   const Eigen::Vector3d downhill(std::cos(phi), 0.0, -std::sin(phi));
   const Sample& a = run[50];
