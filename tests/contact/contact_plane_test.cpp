@@ -190,7 +190,7 @@ TEST(ContactPlane, PartialsAgainstATiltedPlaneMatchCentralDifferences) {
   v << 0.3, -0.2, -0.01, 0.2, 0.1, -0.5;
   checkJacobian(deck, v);
   // The sphere pressed into an unbounded plane, with friction.
-  std::string ball = ballDeck(kPlaneFloor, 0.099, 0.0, 0.0);
+  std::string ball = ballDeck(kPlaneFloor, 0.0995, 0.0, 0.0);
   ball.replace(ball.find("\nACCGRAV"), 0,
                ", COULOMB_FRICTION=ON, MU_STATIC=0.5, MU_DYNAMIC=0.3, "
                "STICTION_TRANSITION_VELOCITY=1e-3, FRICTION_TRANSITION_VELOCITY=1e-2");
