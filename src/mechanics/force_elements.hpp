@@ -143,17 +143,17 @@ class ForceElements {
   template <class T>
   ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
-  ElementLoads<T> contactElementLoads(int k, const T* y) const {
+  ElementLoads<T> contactElementLoads(int k, double t, const T* y) const {
     contact::ContactKinematics<T> kin(*model_, layout_, y);
-    return contactElementLoads(k, kin);
+    return contactElementLoads(k, t, kin);
   }
   template <class T>
-  ElementLoads<T> contactElementLoads(int k, contact::ContactKinematics<T>& kin) const;
+  ElementLoads<T> contactElementLoads(int k, double t, contact::ContactKinematics<T>& kin) const;
   // The CONTACT elements of a residual evaluation (they are the last elements): only those the
   // shared broad phase finds near, with the marker states and poses they read computed once
   // (theory §6c, "Shared kinematics"). The others add exactly zero.
   template <class T>
-  void addContactsToResidual(const T* y, T* g, bool derivativesOnly) const;
+  void addContactsToResidual(double t, const T* y, T* g, bool derivativesOnly) const;
   // The analysis under way (the run state's; the default before any).
   model::AnalysisMode analysisMode() const {
     return run_ != nullptr ? run_->status().mode : model::AnalysisStatus{}.mode;
@@ -365,7 +365,7 @@ ElementLoads<T> ForceElements::vectorForceLoads(int k, double t, const T* y,
 }
 
 template <class T>
-ElementLoads<T> ForceElements::contactElementLoads(int k,
+ElementLoads<T> ForceElements::contactElementLoads(int k, double t,
                                                    contact::ContactKinematics<T>& kin) const {
   const model::Contact& c = model_->contacts[k];
   // DYNAMICS_ONLY: friction in dynamic analyses only (ADAMS); the mode is the session's.
@@ -373,7 +373,8 @@ ElementLoads<T> ForceElements::contactElementLoads(int k,
       c.friction == model::Contact::Friction::On ||
       (c.friction == model::Contact::Friction::DynamicsOnly &&
        analysisMode() == model::AnalysisMode::Dynamics);
-  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, kin, friction);
+  const contact::ContactLoads<T> cl =
+      contact::contactLoads(*model_, layout_, c, kin, friction, t);
   ElementLoads<T> l;
   l.force = cl.force;
   l.torque = cl.torqueAtI;
@@ -395,7 +396,7 @@ ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
     case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
     case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
     case ForceElementKind::MultiPoint: return {};  // multiPointLoads
-    case ForceElementKind::Contact: return contactElementLoads(e.index, y);
+    case ForceElementKind::Contact: return contactElementLoads(e.index, t, y);
   }
   return {};
 }
@@ -522,11 +523,12 @@ void ForceElements::addToResidual(double t, const T* y, T* g, const DynamicReads
       applyToBody(l.reactionMarker, l.reactionPoint, l.reactionForce, l.reactionTorque,
                   l.hasForce, l.hasTorque, y, g);
   }
-  if (!model_->contacts.empty()) addContactsToResidual(y, g, derivativesOnly);
+  if (!model_->contacts.empty()) addContactsToResidual(t, y, g, derivativesOnly);
 }
 
 template <class T>
-void ForceElements::addContactsToResidual(const T* y, T* g, bool derivativesOnly) const {
+void ForceElements::addContactsToResidual(double t, const T* y, T* g,
+                                          bool derivativesOnly) const {
   const std::vector<int>& near = broadPhase_.near(y);
   contact::ContactKinematics<T> kin(*model_, layout_, y, &broadPhase_.slots());
   // Which bodies' states carry a derivative (all, unless derivativesOnly on dual numbers).
@@ -539,7 +541,7 @@ void ForceElements::addContactsToResidual(const T* y, T* g, bool derivativesOnly
     const int bi = model_->parts[model_->markers[c.iMarker].part].body;
     const int bj = model_->parts[model_->markers[c.jMarker].part].body;
     if (!broadPhase_.eitherSeeded(seeded, bi, bj)) continue;
-    const ElementLoads<T> l = contactElementLoads(k, kin);
+    const ElementLoads<T> l = contactElementLoads(k, t, kin);
     if (bi >= 0)
       applyAtPose(bi, kin.pose(bi), kin.marker(c.iMarker).p, l.force, l.torque, true, true, g);
     if (bj >= 0)

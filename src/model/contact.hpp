@@ -5,10 +5,12 @@
 
 #include <Eigen/Dense>
 #include <cmath>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "common/source_location.hpp"
+#include "user/contact_interfaces.hpp"
 
 namespace openmss::model {
 
@@ -20,6 +22,9 @@ struct ContactSolid {
     // CYLINDER (RADIUS) or FRUSTUM (BOTTOM, TOP): CM marker at the centre of the bottom disc,
     // LENGTH along its z axis (negative: along -z); a cylinder is a frustum with equal radii.
     Frustum,
+    // PLANE: the half-space below the RM marker's xy-plane (z < 0 in its axes), limited
+    // sideways to XMIN..XMAX, YMIN..YMAX along its x and y axes when they are given.
+    Plane,
   };
   Shape shape = Shape::Sphere;
   long graphicsId = 0;
@@ -28,6 +33,8 @@ struct ContactSolid {
   // Sphere: radius in x. Box: the extents X, Y, Z. Frustum: bottom radius in x, top radius in
   // y, LENGTH in z.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  // Plane: XMIN, XMAX, YMIN, YMAX (infinite when not given).
+  Eigen::Vector4d bounds{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL};
   // Radius of a sphere about the reference marker's origin that holds the solid: the
   // bounding test that skips far pairs before the narrow phase (theory §6c, "Broad phase").
   double boundingRadius = 0.0;
@@ -45,7 +52,8 @@ inline double frustumHalfAngle(const ContactSolid& s) {
 }
 
 struct Contact {
-  enum class NormalLaw { Impact, Poisson };
+  // User: NORMAL_FUNCTION=USER(...), the force from CNFSUB (normalRoutine).
+  enum class NormalLaw { Impact, Poisson, User };
   enum class Friction { Off, On, DynamicsOnly };
   long id = 0;
   std::vector<ContactSolid> iSolids, jSolids;
@@ -62,6 +70,10 @@ struct Contact {
   Friction friction = Friction::Off;
   double muStatic = 0.0, muDynamic = 0.0;
   double stictionVelocity = 0.0, frictionVelocity = 0.0;
+  // NORMAL_FUNCTION=USER(...) (CNFSUB) and FRICTION_FUNCTION=USER(...) (CFFSUB), or null: the
+  // user laws of docs/user-subroutines.md, "CNFSUB and CFFSUB" (contact_user_laws.cpp).
+  std::shared_ptr<const user::ContactNormalRoutine> normalRoutine;
+  std::shared_ptr<const user::ContactFrictionRoutine> frictionRoutine;
   // Cleared to skip the element (the generic ACTIVATE/DEACTIVATE mechanism sets it).
   bool active = true;
   SourceLocation where;

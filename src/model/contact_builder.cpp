@@ -3,7 +3,9 @@
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <utility>
 
+#include "model/contact_user_laws.hpp"
 #include "model/graphics_builder.hpp"
 #include "model/statement_arguments.hpp"
 
@@ -47,6 +49,31 @@ bool readFrustum(const Statement& g, const std::string& kind, const Model& model
   out.size = Eigen::Vector3d(bottom, top, length);
   out.boundingRadius = std::hypot(std::max(bottom, top), length);
   out.marker = graphicsMarker(g, "CM", model, where, subject, diags);
+  return true;
+}
+
+// PLANE (RM, XMIN, XMAX, YMIN, YMAX): the half-space below RM's xy-plane, limited sideways to
+// the rectangle when one is given (theory §6c, "Plane"); false after a diagnostic at `where`.
+bool readPlane(const Statement& g, const Model& model, const SourceLocation& where,
+               const std::string& subject, Diagnostics& diags, ContactSolid& out) {
+  const char* names[4] = {"XMIN", "XMAX", "YMIN", "YMAX"};
+  int given = 0;
+  for (int k = 0; k < 4; ++k)
+    if (g.find(names[k])) {
+      out.bounds[k] = graphicsNumber(g, names[k]);
+      ++given;
+    }
+  if ((given != 0 && given != 4) || !(out.bounds[0] < out.bounds[1]) ||
+      !(out.bounds[2] < out.bounds[3])) {
+    diags.error(where, subject,
+                graphicsAt(g) + " is a PLANE with " + std::to_string(given) +
+                    " of XMIN, XMAX, YMIN, YMAX given or an empty rectangle",
+                "Give all four with XMIN < XMAX and YMIN < YMAX, or none (an unbounded plane).");
+    return false;
+  }
+  out.shape = ContactSolid::Shape::Plane;
+  out.boundingRadius = HUGE_VAL;  // a half-space: every pair goes to the narrow phase
+  out.marker = graphicsMarker(g, "RM", model, where, subject, diags);
   return true;
 }
 
@@ -104,18 +131,19 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
     return false;
   } else if (kind == "CYLINDER" || kind == "FRUSTUM") {
     if (!readFrustum(g, kind, model, where, subject, diags, out)) return false;
-  } else if (kind == "TORUS" || kind == "PLANE") {
+  } else if (kind == "PLANE") {
+    if (!readPlane(g, model, where, subject, diags, out)) return false;
+  } else if (kind == "TORUS") {
     diags.error(where, subject,
                 graphicsAt(g) + " is a " + kind + ": contact with it is not supported yet",
-                "Use ELLIPSOID (sphere), BOX, CYLINDER or FRUSTUM solids; a floor is a large "
-                "BOX.");
+                "Use ELLIPSOID (sphere), BOX, CYLINDER, FRUSTUM or PLANE solids.");
     return false;
   } else {
     diags.error(where, subject,
                 graphicsAt(g) + " is " +
                     (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
                     ": CONTACT needs solids (a volume)",
-                "Name ELLIPSOID (sphere), BOX, CYLINDER or FRUSTUM GRAPHICS in IGEOM and "
+                "Name ELLIPSOID (sphere), BOX, CYLINDER, FRUSTUM or PLANE GRAPHICS in IGEOM and "
                 "JGEOM.");
     return false;
   }
@@ -165,6 +193,19 @@ bool readSide(const Statement& s, const char* name, const std::map<long, const S
 void readNormalLaw(StatementArguments& a, Contact& c) {
   const Statement& s = a.statement();
   const bool impact = s.has("IMPACT"), poisson = s.has("POISSON");
+  if (s.has("NORMAL_FUNCTION")) {
+    // CNFSUB gives the whole normal force (contact_user_laws.cpp).
+    c.law = Contact::NormalLaw::User;
+    for (const char* other : {"IMPACT", "POISSON", "STIFFNESS", "DAMPING", "DMAX", "EXPONENT",
+                              "PENALTY", "RESTITUTION_COEFFICIENT"})
+      if (const Argument* x = a.find(other))
+        a.error(*x,
+                std::string(other) +
+                    " with NORMAL_FUNCTION=USER(...): CNFSUB gives the "
+                    "whole normal force",
+                std::string("Remove ") + other + ", or NORMAL_FUNCTION to use the built-in law.");
+    return;
+  }
   if (impact == poisson) {
     a.error(s.where,
             impact ? "give only one of IMPACT and POISSON" : "the normal force law is missing",
@@ -211,6 +252,24 @@ void readFriction(StatementArguments& a, Contact& c) {
   c.friction = mode == "ON"              ? Contact::Friction::On
                : mode == "DYNAMICS_ONLY" ? Contact::Friction::DynamicsOnly
                                          : Contact::Friction::Off;
+  if (const Argument* f = a.find("FRICTION_FUNCTION")) {
+    // CFFSUB gives the friction force (contact_user_laws.cpp); COULOMB_FRICTION only says when
+    // it acts (ON when omitted).
+    if (!a.find("COULOMB_FRICTION")) c.friction = Contact::Friction::On;
+    if (c.friction == Contact::Friction::Off)
+      a.error(*f, "FRICTION_FUNCTION=USER(...) with COULOMB_FRICTION = OFF",
+              "Remove one of them: OFF turns friction off.");
+    for (const char* other : {"MU_STATIC", "MU_DYNAMIC", "STICTION_TRANSITION_VELOCITY",
+                              "FRICTION_TRANSITION_VELOCITY"})
+      if (const Argument* x = a.find(other))
+        a.error(*x,
+                std::string(other) +
+                    " with FRICTION_FUNCTION=USER(...): CFFSUB gives the "
+                    "whole friction force",
+                std::string("Remove ") + other +
+                    ", or FRICTION_FUNCTION to use the built-in Coulomb law.");
+    return;
+  }
   if (c.friction == Contact::Friction::Off) return;
   auto value = [&](const char* name, double& out) {
     a.require(name, "a number >= 0");
@@ -234,12 +293,17 @@ void readFriction(StatementArguments& a, Contact& c) {
 
 void rejectUnsupported(StatementArguments& a) {
   for (const char* name :
-       {"ICURVE", "JCURVE", "IFLIP_GEOMETRY", "JFLIP_GEOMETRY", "AUGMENTED_LAGRANGIAN_FORMULATION",
-        "NORMAL_FUNCTION", "FRICTION_FUNCTION", "NORMAL_ROUTINE", "FRICTION_ROUTINE"})
+       {"ICURVE", "JCURVE", "IFLIP_GEOMETRY", "JFLIP_GEOMETRY", "AUGMENTED_LAGRANGIAN_FORMULATION"})
     if (const Argument* x = a.find(name))
       a.unsupported(*x,
-                    "Remove it: 3-D solid contact (IGEOM, JGEOM) with IMPACT or POISSON "
-                    "and Coulomb friction is what the solver simulates.");
+                    "Remove it: 3-D solid contact (IGEOM, JGEOM) with IMPACT, POISSON or a "
+                    "user normal law and Coulomb or user friction is what the solver "
+                    "simulates.");
+  for (const auto& [routine, function] : {std::pair{"NORMAL_ROUTINE", "NORMAL_FUNCTION"},
+                                          std::pair{"FRICTION_ROUTINE", "FRICTION_FUNCTION"}})
+    if (const Argument* x = a.find(routine); x && !a.find(function))
+      a.error(*x, std::string(routine) + " without " + function + "=USER(...)",
+              std::string("Add ") + function + "=USER(r1[,...,r30]), or remove " + routine + ".");
   if (const std::optional<std::string> type = a.word("TYPE"); type && *type != "SOLID_TO_SOLID")
     a.unsupported(*a.find("TYPE"), "Only TYPE = SOLID_TO_SOLID is supported.");
 }
@@ -251,6 +315,15 @@ bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
   bool ok = true;
   for (const ContactSolid& a : c.iSolids)
     for (const ContactSolid& b : c.jSolids) {
+      if (a.shape == ContactSolid::Shape::Plane && b.shape == ContactSolid::Shape::Plane) {
+        diags.error(s.where, s.subject(),
+                    "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
+                        std::to_string(b.graphicsId) +
+                        ": two PLANE solids (half-spaces) cannot be in contact",
+                    "Replace one of the planes by a BOX, ELLIPSOID, CYLINDER or FRUSTUM.");
+        ok = false;
+        continue;
+      }
       if (a.shape != ContactSolid::Shape::Frustum || b.shape != ContactSolid::Shape::Frustum)
         continue;
       const ContactSolid& steep = frustumHalfAngle(a) >= frustumHalfAngle(b) ? a : b;
@@ -301,6 +374,7 @@ void buildContacts(const std::vector<const Statement*>& statements,
       continue;
     }
     if (!pairsSupported(*s, c, diags)) continue;
+    if (!bindContactUserLaws(*s, model, c, diags)) continue;
     c.iMarker = c.iSolids.front().marker;
     c.jMarker = c.jSolids.front().marker;
     model.contacts.push_back(c);

@@ -26,11 +26,13 @@ std::string trim(const std::string& s) {
 
 }  // namespace
 
-std::optional<std::vector<double>> userParameters(const Statement& s, Diagnostics& diags) {
-  const Argument* fn = s.find("FUNCTION");
+std::optional<std::vector<double>> userParameters(const Statement& s, Diagnostics& diags,
+                                                  const char* argument) {
+  const std::string name = argument;
+  const Argument* fn = s.find(name);
   if (!fn) {
-    diags.error(s.where, s.subject(), "missing required argument FUNCTION",
-                "Add FUNCTION=USER(r1[,...,r30]): the constants the routines receive as PAR.");
+    diags.error(s.where, s.subject(), "missing required argument " + name,
+                "Add " + name + "=USER(r1[,...,r30]): the constants the routines receive as PAR.");
     return std::nullopt;
   }
   const std::string text = trim(fn->expression);
@@ -40,9 +42,9 @@ std::optional<std::vector<double>> userParameters(const Statement& s, Diagnostic
   const auto open = text.find('(');
   if (head != "USER" || open == std::string::npos || text.back() != ')') {
     diags.error(fn->valueWhere, s.subject(),
-                "FUNCTION must be USER(r1[,...,r30]): " + s.name +
+                name + " must be USER(r1[,...,r30]): " + s.name +
                     " takes its equations from user-written routines only",
-                "Write FUNCTION=USER(...) with the constants the routines read as PAR.");
+                "Write " + name + "=USER(...) with the constants the routines read as PAR.");
     return std::nullopt;
   }
   // Split the list at top-level commas.

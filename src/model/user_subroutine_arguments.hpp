@@ -16,7 +16,9 @@ namespace openmss::model {
 // The constants of FUNCTION=USER(...) (each may be a constant expression such as 2*PI), or
 // nullopt with a diagnostic: FUNCTION missing, not USER(...), more than 30 values, a value
 // that reads the model.
-std::optional<std::vector<double>> userParameters(const language::Statement& s, Diagnostics& diags);
+// `argument` names the USER(...) argument (CONTACT: NORMAL_FUNCTION, FRICTION_FUNCTION).
+std::optional<std::vector<double>> userParameters(const language::Statement& s, Diagnostics& diags,
+                                                  const char* argument = "FUNCTION");
 
 // ROUTINE=lib::name (or EVALUATE_ROUTINE=) of a one-routine element, case kept (empty parts: the defaults).
 user::RoutineName elementRoutineName(const language::Statement& s,

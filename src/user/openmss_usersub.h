@@ -192,6 +192,37 @@ typedef void adams_c_Fiesub(const struct sAdamsField* field, double time, double
                             double* velo, int dflag, int iflag, double* result, double* dfddis,
                             double* dfdvel);
 
+/* CONTACT with NORMAL_FUNCTION=USER / FRICTION_FUNCTION=USER (docs/user-subroutines.md,
+ * "CNFSUB and CFFSUB"), called at each contact point. Cnfsub: loci/locj the points of I's and
+ * J's surfaces, ni/nj their outward normals (ground), gap the signed distance (negative while
+ * the solids overlap), gapdot its rate; values[0] the normal force (positive pushes apart),
+ * values[1] and values[2] its partials in gap and gapdot (read when dflag is nonzero).
+ * Cffsub: xdot[0] the slip speed (xdot[1], xdot[2], x 0), nforce the normal force; values[0]
+ * the friction force along the slip (negative opposes it), values[1] and values[2] its partials
+ * in xdot[0] and nforce. Field order as ADAMS's structs. */
+struct sAdamsContact {
+  int ID;
+  int nIGEOM;
+  int nJGEOM;
+  int* IGEOM;
+  int* JGEOM;
+  int* IFLIP_GEOM;
+  int* JFLIP_GEOM;
+};
+struct sAdamsContactFriction {
+  struct sAdamsContact contact;
+  int NPAR;
+  const double* PAR;
+};
+typedef void adams_c_Cnfsub(const struct sAdamsContactFriction* cnf, double time,
+                            const double* loci, const double* ni, const double* locj,
+                            const double* nj, double gap, double gapdot, double gapdotdot,
+                            double area, int dflag, int iflag, double* values);
+typedef void adams_c_Cffsub(const struct sAdamsContactFriction* cff, double time,
+                            const double* loci, const double* locj, const double* x,
+                            const double* xdot, double nforce, double area, int dflag, int iflag,
+                            double* values);
+
 /* CURVE with FUNCTION=USER: values = x, y, z of the curve at alpha (iord 0) or their iord-th
  * derivative in alpha (1, 2). */
 struct sAdamsCurve {

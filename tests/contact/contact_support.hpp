@@ -30,7 +30,10 @@ inline model::Model build(const std::string& text) {
   language::readDatasetText(text, "contact.adm", ds, d);
   model::Model m;
   EXPECT_TRUE(model::buildModel(ds, m, d));
-  for (const auto& x : d.all()) ADD_FAILURE() << format(x);
+  // A PLANE's "not drawn by the viewer" warning is expected; any other diagnostic fails.
+  for (const auto& x : d.all())
+    if (format(x).find("are not drawn by the viewer") == std::string::npos)
+      ADD_FAILURE() << format(x);
   return m;
 }
 

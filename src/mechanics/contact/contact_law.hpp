@@ -8,11 +8,15 @@
 //   of the approach speed (the energy stored is p d^2/2, the energy released r^2 p d^2/2).
 // - Coulomb friction with ADAMS's mu(v) curve: the cubic STEP from 0 to mu_s over |v| < vs,
 //   from mu_s to mu_d over vs..vd, mu_d above; along -v_slip/|v_slip|.
+// - User laws, NORMAL_FUNCTION=USER (CNFSUB) and FRICTION_FUNCTION=USER (CFFSUB): the routine's
+//   value and partials chained into the duals (docs/user-subroutines.md, "CNFSUB and CFFSUB").
 
 #include <cmath>
+#include <type_traits>
 
 #include "common/dual.hpp"
 #include "common/vec3.hpp"
+#include "mechanics/contact/contact_point.hpp"
 #include "model/contact.hpp"
 
 namespace openmss::mechanics::contact {
@@ -71,6 +75,70 @@ template <class T>
 V3<T> frictionForce(const model::Contact& c, const T& normal, const V3<T>& slip) {
   const T k = frictionPerSpeed(c, dot(slip, slip)) * normal;
   return slip * (-k);
+}
+
+// A value computed outside the duals with its partials da, db in the duals a and b.
+template <class T>
+T chained(double value, double da, const T& a, double db, const T& b) {
+  if constexpr (std::is_same_v<T, double>) {
+    (void)da, (void)a, (void)db, (void)b;
+    return value;
+  } else {
+    T out(value);
+    out.d = da * a.d + db * b.d;
+    return out;
+  }
+}
+
+// The surface points of I and J at a contact point (midway between them, d apart along n).
+template <class T>
+void surfacePoints(const ContactPoint<T>& p, double loci[3], double locj[3]) {
+  const double d = valueOf(p.depth);
+  for (int k = 0; k < 3; ++k) {
+    loci[k] = valueOf(p.point[k]) - 0.5 * d * valueOf(p.normal[k]);
+    locj[k] = valueOf(p.point[k]) + 0.5 * d * valueOf(p.normal[k]);
+  }
+}
+
+// The normal force at one contact point, `rate` the penetration's rate: CNFSUB's or the
+// built-in law's. `t` NaN asks for the contact points only (analysis/contact_events.cpp): the
+// user routine is then not called and the force is 0.
+template <class T>
+T pointNormalForce(const model::Contact& c, double t, const ContactPoint<T>& p, const T& rate) {
+  if (!c.normalRoutine) return normalForce(c, p.depth, rate);
+  if (std::isnan(t)) return T(0.0);
+  user::ContactNormalInput in{};
+  surfacePoints(p, in.loci, in.locj);
+  for (int k = 0; k < 3; ++k) {
+    in.nj[k] = valueOf(p.normal[k]);
+    in.ni[k] = -in.nj[k];
+  }
+  in.gap = -valueOf(p.depth);
+  in.gapdot = -valueOf(rate);
+  double v[3];
+  c.normalRoutine->evaluate(t, in, !std::is_same_v<T, double>, v);
+  return chained(v[0], -v[1], p.depth, -v[2], rate);  // gap = -depth, gapdot = -rate
+}
+
+// The friction force on I at one contact point: CFFSUB's value f along the slip direction,
+// F = (f / s) v_slip (s = |v_slip|), or the built-in Coulomb law. At s = 0 exactly, f/s is
+// taken as its limit df/ds (a friction law vanishes at zero slip). `t` NaN: as above.
+template <class T>
+V3<T> pointFrictionForce(const model::Contact& c, double t, const ContactPoint<T>& p,
+                         const T& normal, const V3<T>& slip) {
+  if (!c.frictionRoutine) return frictionForce(c, normal, slip);
+  if (std::isnan(t)) return V3<T>();
+  user::ContactFrictionInput in{};
+  surfacePoints(p, in.loci, in.locj);
+  const T speedSquared = dot(slip, slip);
+  const double s = std::sqrt(valueOf(speedSquared));
+  in.xdot[0] = s;
+  in.nforce = valueOf(normal);
+  double v[3];
+  c.frictionRoutine->evaluate(t, in, !std::is_same_v<T, double>, v);
+  if (s == 0.0) return slip * T(v[1]);
+  const double g = v[0] / s;
+  return slip * chained(g, (v[1] - g) / s, sqrtOf(speedSquared), v[2] / s, normal);
 }
 
 }  // namespace openmss::mechanics::contact

@@ -5,6 +5,7 @@
 // part through the I marker's origin and, equal and opposite, on J's part through the J marker's
 // origin.
 
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -55,11 +56,13 @@ inline bool boundingSpheresOverlap(const V3<double>& ci, double ri, const V3<dou
 
 // `withFriction` is false when COULOMB_FRICTION is OFF, or DYNAMICS_ONLY outside dynamics.
 // `kin` gives the marker states (shared by the elements of one evaluation, or computed afresh:
-// contact_kinematics.hpp); the result does not depend on which.
+// contact_kinematics.hpp); the result does not depend on which. `t` is the time user laws are
+// called at; NaN asks for the contact points only (pointNormalForce).
 template <class T>
 ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
                              const model::Contact& c, ContactKinematics<T>& kin,
-                             bool withFriction) {
+                             bool withFriction,
+                             double t = std::numeric_limits<double>::quiet_NaN()) {
   ContactLoads<T> out;
   const T* y = kin.y();
   // Broad phase: bounding spheres about the reference markers, on values, before any work on
@@ -103,9 +106,9 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
     const V3<T> vj = mj.pdot + cross(mj.w, p.point - mj.p);
     const V3<T> vrel = vi - vj;
     const T approach = -dot(vrel, p.normal);  // the rate of the penetration
-    const T fn = normalForce(c, p.depth, approach) * p.weight;
+    const T fn = pointNormalForce(c, t, p, approach) * p.weight;
     V3<T> f = p.normal * fn;
-    if (withFriction) f += frictionForce(c, fn, vrel - p.normal * dot(vrel, p.normal));
+    if (withFriction) f += pointFrictionForce(c, t, p, fn, vrel - p.normal * dot(vrel, p.normal));
     out.force += f;
     out.torqueAtI += cross(p.point - mi.p, f);
     out.torqueAtJ -= cross(p.point - mj.p, f);
@@ -118,9 +121,10 @@ ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
 // One element on its own, every marker state computed afresh (read-backs, events).
 template <class T>
 ContactLoads<T> contactLoads(const model::Model& m, const StateLayout& layout,
-                             const model::Contact& c, const T* y, bool withFriction) {
+                             const model::Contact& c, const T* y, bool withFriction,
+                             double t = std::numeric_limits<double>::quiet_NaN()) {
   ContactKinematics<T> kin(m, layout, y);
-  return contactLoads(m, layout, c, kin, withFriction);
+  return contactLoads(m, layout, c, kin, withFriction, t);
 }
 
 }  // namespace openmss::mechanics::contact
