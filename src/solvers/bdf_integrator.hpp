@@ -109,9 +109,9 @@ class BdfIntegrator final : public Integrator {
   // Per-unknown masks fixed at start(): 1 where the unknown is under error control / has a
   // derivative in G (velocities of an index-3 problem have one but no error control).
   Eigen::VectorXd errorMask_, differentialMask_;
-  // 1 for velocity unknowns (their round-off grows with cj), 0 otherwise; and the floor built
-  // from it per attempt (withinRoundOff).
-  Eigen::VectorXd velocityMask_, roundOffFloor_;
+  // 1 for velocity unknowns (their round-off grows with cj), 0 otherwise; 1 for positions; and
+  // the floor built from them per attempt (withinRoundOff).
+  Eigen::VectorXd velocityMask_, positionMask_, roundOffFloor_;
   Eigen::VectorXi rowExponent_, unknownExponent_;
   // Inverse tolerance weights of the current step, 1 / (ERROR (1 + |y_n,i|)), masked: for the
   // error test (error-controlled unknowns) and for the corrector's convergence test.

@@ -83,10 +83,12 @@ long statistic(const std::string& msg, const std::string& label) {
 // The tip at the last output time: the time line, then REQUEST/1..5; REQUEST/3 carries DX and
 // DY, REQUEST/4 DZ first, each as AINT(v), AINT(1e6 frac) and the rest (six printed digits are
 // too few for 1e-8 m; bench/model_generators.cpp).
-Tip runChain(const std::string& integrator, double error) {
+Tip runChain(const std::string& integrator, double error,
+             const std::string& adm = planarPendulumChainAdm(kLinks), double end = kEnd,
+             int outputSteps = kOutputSteps) {
   const fs::path dir = scratch("chain");
-  write(dir / "chain.adm", planarPendulumChainAdm(kLinks));
-  write(dir / "chain.acf", chainAcf("chain.adm", "chain", kEnd, kOutputSteps, error, integrator));
+  write(dir / "chain.adm", adm);
+  write(dir / "chain.acf", chainAcf("chain.adm", "chain", end, outputSteps, error, integrator));
   const Result r = run("run chain.acf", dir);
   Tip tip;
   tip.status = r.status;
@@ -146,6 +148,36 @@ TEST(ChainGlobalError, SlowConvergenceReformsTheNewtonMatrix) {
       "residuals (%.2f per step)\n",
       kLinks, kEnd, gstiff.steps, gstiff.jacobians, gstiff.residuals, perStep);
   EXPECT_LT(perStep, 3.9);
+}
+
+// The round-off floor of an I3 velocity (kRoundOffUlps in src/solvers/bdf_integrator.cpp,
+// docs/integrators.md "Singular configurations"): a velocity recovered from positions through cj
+// carries their round-off, cj ulp(|q|), not its own. The 3000-link spatial chain's far links
+// hang 3 km from the pivot (ulp 4.5e-13 m); at ERROR = 1e-7 their velocity changes stalled just
+// above the corrector's stall test, and with the floor sized on the velocity's own magnitude the
+// run failed at t = 1.08e-4 s with "the corrector did not converge" (every retry at a shorter
+// step worse, the noise growing as cj; docs/performance.md, "Large models"). With the floor on
+// the largest position it reaches END. Truth: the same chain by MERSON at ERROR = 1e-9, tip
+// within 1e-6 m (10 ERROR; the tip moves about g t^2 / 2 = 2e-5 m in 2e-3 s). At END = 2e-4 s
+// the old floor passed too (shorter steps): this END reproduces the failure.
+TEST(ChainGlobalError, FarLinksRoundOffDoesNotStopTheCorrector) {
+  constexpr int kFarLinks = 3000;
+  constexpr double kShortEnd = 2e-3;
+  const std::string adm = spatialPendulumChainAdm(kFarLinks);
+  const Tip gstiff = runChain("GSTIFF", 1e-7, adm, kShortEnd, 2);
+  ASSERT_EQ(gstiff.status, 0) << gstiff.output;
+  ASSERT_DOUBLE_EQ(gstiff.time, kShortEnd) << gstiff.output;
+  const Tip reference = runChain("MERSON", 1e-9, adm, kShortEnd, 2);
+  ASSERT_EQ(reference.status, 0) << reference.output;
+  ASSERT_DOUBLE_EQ(reference.time, kShortEnd) << reference.output;
+  EXPECT_GT(std::hypot(reference.position[0], reference.position[1]), 0.9 * kFarLinks);
+  const double distance = std::hypot(gstiff.position[0] - reference.position[0],
+                                     gstiff.position[1] - reference.position[1],
+                                     gstiff.position[2] - reference.position[2]);
+  std::printf("chain-spatial %d links, %g s: GSTIFF ERROR=1e-7 (%ld steps) tip %.2e m from "
+              "MERSON 1e-9\n",
+              kFarLinks, kShortEnd, gstiff.steps, distance);
+  EXPECT_LT(distance, 1e-6);
 }
 
 }  // namespace
