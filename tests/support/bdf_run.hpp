@@ -6,8 +6,10 @@
 
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <Eigen/Dense>
 
@@ -81,5 +83,34 @@ class BdfRun {
   std::unique_ptr<analysis::MultibodyDae> dae_;
   std::unique_ptr<solvers::BdfIntegrator> bdf_;
 };
+
+// The states at `times` of a built model integrated from its initial state (velocities and
+// accelerations made consistent, no position assembly) by BdfIntegrator at ERROR = 1e-9,
+// HMAX = 0.05, and the run's residual evaluations: the common run of the tests that compare a
+// user routine with the same model written with function expressions (tests/user).
+struct Trajectory {
+  std::vector<Eigen::VectorXd> states;
+  long residuals = 0;
+};
+
+inline Trajectory integrateModel(const model::Model& m, std::initializer_list<double> times) {
+  Trajectory out;
+  mechanics::MultibodySystem s(m);
+  Eigen::VectorXd y = s.initialState(), yp;
+  mechanics::solveVelocities(s, 0.0, y);
+  EXPECT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
+  solvers::MultistepSettings settings;
+  settings.error = 1e-9;
+  settings.hmax = 0.05;
+  analysis::MultibodyDae dae(s);
+  solvers::BdfIntegrator bdf(dae, settings);
+  bdf.start(0.0, y, yp);
+  for (double t : times) {
+    EXPECT_TRUE(bdf.advanceTo(t)) << bdf.failure().reason;
+    out.states.push_back(bdf.y());
+  }
+  out.residuals = bdf.statistics().residualEvaluations;
+  return out;
+}
 
 }  // namespace openmss::test

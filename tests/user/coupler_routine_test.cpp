@@ -22,6 +22,8 @@
 #include "model/model_builder.hpp"
 #include "output/request_file_reader.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/bdf_run.hpp"
+#include "support/built_model.hpp"
 #include "support/cli_run.hpp"
 #include "support/constraint_derivative_check.hpp"
 #include "support/newton_matrix_check.hpp"
@@ -34,12 +36,7 @@ const std::string kC = OPENMSS_TEST_C_ROUTINES;
 const std::string kF77 = OPENMSS_TEST_F77_ROUTINES;
 
 bool build(const std::string& text, model::Model& m, std::string* messages) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "c.adm", ds, d);
-  const bool ok = model::buildModel(ds, m, d) && !d.hasErrors();
-  for (const auto& x : d.all()) *messages += format(x) + "\n";
-  return ok;
+  return testing::readAndBuildModel(text, "c.adm", m, messages);
 }
 
 // Two revolute joints about z and a translational joint along (1, 2, 0), gravity along -y:
@@ -73,36 +70,15 @@ std::string quoted(const std::string& lib, const std::string& names) {
   return "\"" + lib + "::" + names + "\"";
 }
 
-const double kTimes[] = {0.25, 0.5, 1.0, 1.5};
-
-struct Trajectory {
-  std::vector<Eigen::VectorXd> states;
-  long residuals = 0;
-};
+using test::Trajectory;
 
 Trajectory simulate(const std::string& text) {
-  Trajectory out;
   model::Model m;
   std::string messages;
   const bool built = build(text, m, &messages);
   EXPECT_TRUE(built) << messages;
-  if (!built) return out;
-  mechanics::MultibodySystem s(m);
-  Eigen::VectorXd y = s.initialState(), yp;
-  mechanics::solveVelocities(s, 0.0, y);
-  EXPECT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
-  solvers::MultistepSettings settings;
-  settings.error = 1e-9;
-  settings.hmax = 0.05;
-  analysis::MultibodyDae dae(s);
-  solvers::BdfIntegrator bdf(dae, settings);
-  bdf.start(0.0, y, yp);
-  for (double t : kTimes) {
-    EXPECT_TRUE(bdf.advanceTo(t)) << bdf.failure().reason;
-    out.states.push_back(bdf.y());
-  }
-  out.residuals = bdf.statistics().residualEvaluations;
-  return out;
+  if (!built) return {};
+  return test::integrateModel(m, {0.25, 0.5, 1.0, 1.5});
 }
 
 // The positions and velocities of the three moving parts (the multipliers are scaled

@@ -17,6 +17,7 @@
 #include "model/model_builder.hpp"
 #include "output/request_file_reader.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/bdf_run.hpp"
 #include "support/built_model.hpp"
 #include "support/cli_run.hpp"
 #include "support/newton_matrix_check.hpp"
@@ -84,36 +85,15 @@ std::string userField(const std::string& library, const std::string& name, bool 
          "\"\n";
 }
 
-const double kTimes[] = {0.25, 0.5, 1.0, 2.0};
-
-struct Trajectory {
-  std::vector<Eigen::VectorXd> states;
-  long residuals = 0;
-};
+using test::Trajectory;
 
 Trajectory simulate(const std::string& text) {
-  Trajectory out;
   model::Model m;
   std::string messages;
   const bool built = build(text, m, &messages);
   EXPECT_TRUE(built) << messages;
-  if (!built) return out;
-  mechanics::MultibodySystem s(m);
-  Eigen::VectorXd y = s.initialState(), yp;
-  mechanics::solveVelocities(s, 0.0, y);
-  EXPECT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
-  solvers::MultistepSettings settings;
-  settings.error = 1e-9;
-  settings.hmax = 0.05;
-  analysis::MultibodyDae dae(s);
-  solvers::BdfIntegrator bdf(dae, settings);
-  bdf.start(0.0, y, yp);
-  for (double t : kTimes) {
-    EXPECT_TRUE(bdf.advanceTo(t)) << bdf.failure().reason;
-    out.states.push_back(bdf.y());
-  }
-  out.residuals = bdf.statistics().residualEvaluations;
-  return out;
+  if (!built) return {};
+  return test::integrateModel(m, {0.25, 0.5, 1.0, 2.0});
 }
 
 // Returns the largest state difference; asserts the comparison covered every state.
