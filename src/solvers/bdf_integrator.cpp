@@ -180,9 +180,9 @@ double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::Vector
 bool BdfIntegrator::withinRoundOff(double cj) {
   constexpr double kEps = 2.220446049250313e-16;
   const double largestPosition = (yNew_.array().abs() * positionMask_.array()).maxCoeff();
-  const Eigen::ArrayXd magnitude =
-      yNew_.array().abs().max(largestPosition * velocityMask_.array());
-  roundOffFloor_ = (kRoundOffUlps * kEps) * (1.0 + magnitude) *
+  // One expression into the member: no temporary vector per corrector iteration.
+  roundOffFloor_ = (kRoundOffUlps * kEps) *
+                   (1.0 + yNew_.array().abs().max(largestPosition * velocityMask_.array())) *
                    (1.0 + (std::max(1.0, cj) - 1.0) * velocityMask_.array());
   return ((dy_.array().abs() - roundOffFloor_.array()) * differentialMask_.array()).maxCoeff() <=
          0.0;

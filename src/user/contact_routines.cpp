@@ -7,6 +7,7 @@
 #include <cstring>
 #include <limits>
 
+#include "user/difference_step.hpp"
 #include "user/openmss_usersub.h"
 #include "user/plain_routine.hpp"
 
@@ -19,27 +20,6 @@ using F77Cnfsub = void(int* id, double* time, double* par, int* npar, double* lo
 using F77Cffsub = void(int* id, double* time, double* par, int* npar, double* loci, double* locj,
                        double* x, double* xdot, double* nforce, double* area, int* dflag,
                        int* iflag, double* values);
-
-// A partial the routine did not write keeps this NaN (its payload tells it from a NaN the
-// routine computed): that partial then comes from central differences (as FIESUB's).
-constexpr std::uint64_t kUnsetBits = 0x7ff8dead0000beefULL;
-double unset() {
-  double v;
-  std::memcpy(&v, &kUnsetBits, sizeof v);
-  return v;
-}
-bool isUnset(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b == kUnsetBits;
-}
-
-// Central-difference step of the evaluation subroutines (docs/user-subroutines.md, "The
-// protocol"): cbrt(eps) max(1, |x|), rounded to a representable difference.
-double stepFor(double x) {
-  const double h = std::cbrt(DBL_EPSILON) * std::max(1.0, std::abs(x));
-  return (x + h) - x;
-}
 
 // What CNFSUB and CFFSUB share: the struct, the call under the guard, the partials protocol.
 // `Input` is the point's arguments; raw() calls the routine once; `inputOf(k)` the argument
@@ -73,11 +53,11 @@ class ContactRoutine : public Interface, public PlainRoutine {
   void evaluate(double time, const Input& in, bool partials, double values[3]) const override {
     const double nan = std::numeric_limits<double>::quiet_NaN();
     values[0] = nan;
-    values[1] = values[2] = unset();
+    values[1] = values[2] = unsetPartial();
     bool ok = raw(time, in, partials ? 1 : 0, 0, values) && finite(values, 1, time);
     if (ok && partials) {
       for (int k = 1; k <= 2; ++k)
-        if (isUnset(values[k])) values[k] = difference(time, in, k);
+        if (isUnsetPartial(values[k])) values[k] = difference(time, in, k);
       ok = finite(values + 1, 2, time);
     }
     if (!partials) values[1] = values[2] = 0.0;
@@ -90,7 +70,7 @@ class ContactRoutine : public Interface, public PlainRoutine {
   // d values[0] / d input k by central differences, DFLAG = 0.
   double difference(double time, const Input& in, int k) const {
     Input a = in, b = in;
-    const double base = inputOf(a, k), h = stepFor(base);
+    const double base = inputOf(a, k), h = differenceStep(base);
     inputOf(a, k) = base + h;
     inputOf(b, k) = base - h;
     double plus[3], minus[3];

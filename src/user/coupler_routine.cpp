@@ -7,6 +7,7 @@
 #include <limits>
 #include <vector>
 
+#include "user/difference_step.hpp"
 #include "user/openmss_usersub.h"
 #include "user/plain_routine.hpp"
 
@@ -131,11 +132,10 @@ bool Coupler::compute(double time, const double* disp, int order, CouplerCache& 
 // d phi / d disp_k by central differences of COUSUB, step cbrt(eps) max(1, |x|) as for the
 // evaluation subroutines (docs/user-subroutines.md, "The protocol").
 bool Coupler::firstByDifferences(double time, const double* disp, double* first) const {
-  const double rel = std::cbrt(DBL_EPSILON);
   double d[3], plus, minus;
   for (int k = 0; k < d_.count; ++k) {
     std::memcpy(d, disp, sizeof d);
-    const double h = (disp[k] + rel * std::max(1.0, std::abs(disp[k]))) - disp[k];
+    const double h = differenceStep(disp[k]);
     d[k] = disp[k] + h;
     if (!value(0, time, d, &plus, 1)) return false;
     d[k] = disp[k] - h;
@@ -152,11 +152,10 @@ bool Coupler::secondByDifferences(double time, const double* disp, double* secon
   const int n = d_.count;
   double d[3];
   if (r_[1]) {
-    const double rel = std::cbrt(DBL_EPSILON);
     double plus[3], minus[3];
     for (int l = 0; l < n; ++l) {
       std::memcpy(d, disp, sizeof d);
-      const double h = (disp[l] + rel * std::max(1.0, std::abs(disp[l]))) - disp[l];
+      const double h = differenceStep(disp[l]);
       d[l] = disp[l] + h;
       if (!value(1, time, d, plus, n)) return false;
       d[l] = disp[l] - h;
@@ -167,7 +166,7 @@ bool Coupler::secondByDifferences(double time, const double* disp, double* secon
   }
   const double rel = std::sqrt(std::sqrt(DBL_EPSILON));
   double h[3];
-  for (int k = 0; k < n; ++k) h[k] = (disp[k] + rel * std::max(1.0, std::abs(disp[k]))) - disp[k];
+  for (int k = 0; k < n; ++k) h[k] = differenceStep(disp[k], rel);
   for (int k = 0; k < n; ++k)
     for (int l = k; l < n; ++l) {
       double f[4];

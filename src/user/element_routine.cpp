@@ -10,6 +10,7 @@
 
 #include "user/element_call.hpp"
 #include "user/openmss_usersub.h"
+#include "user/difference_step.hpp"
 #include "user/plain_routine.hpp"
 #include "user/routine_guard.hpp"
 #include "user/routine_symbol.hpp"
@@ -145,13 +146,13 @@ class Routine final : public ElementRoutine {
     if (!checkFinite(out, time)) return;
     if (!withPartials) return;
     // Central differences over the inputs the routine gave no SYSPAR partials for, and over
-    // TIME; the step cbrt(eps) * max(1, |x|) balances truncation (h^2) and rounding (eps/h).
-    const double rel = std::cbrt(DBL_EPSILON);
+    // TIME; the step cbrt(eps) * max(1, |x|) balances truncation (h^2) and rounding (eps/h)
+    // (differenceStep).
     const int perturbed = fdFlag();
     std::vector<double> x(host, host + n), plus(m), minus(m);
     auto difference = [&](size_t k) {
       const double base = host[k];
-      const double h = ((base + rel * std::max(1.0, std::abs(base))) - base);
+      const double h = differenceStep(base);
       Call p = c;
       p.needsPartials = false;
       p.provided = nullptr;
@@ -166,7 +167,7 @@ class Routine final : public ElementRoutine {
     };
     for (size_t k = 0; k < n; ++k)
       if (!given[k]) difference(k);
-    timeDifference(c, time, x, plus, minus, rel, dTime);
+    timeDifference(c, time, x, plus, minus, dTime);
     if (!checkFinite(dHost, time)) return;
   }
 
@@ -207,9 +208,9 @@ class Routine final : public ElementRoutine {
   int fdFlag() const { return kind_ == RoutineKind::Motsub ? 0 : 1; }
 
   void timeDifference(const Call& c, double t, const std::vector<double>& x,
-                      std::vector<double>& plus, std::vector<double>& minus, double rel,
+                      std::vector<double>& plus, std::vector<double>& minus,
                       std::vector<double>& dTime) const {
-    const double h = ((t + rel * std::max(1.0, std::abs(t))) - t);
+    const double h = differenceStep(t);
     Call p = c;
     p.needsPartials = false;
     p.provided = nullptr;

@@ -8,6 +8,7 @@
 #include <limits>
 #include <vector>
 
+#include "user/difference_step.hpp"
 #include "user/openmss_usersub.h"
 #include "user/plain_routine.hpp"
 
@@ -16,20 +17,6 @@ namespace {
 
 using F77Fiesub = void(int* id, double* time, double* par, int* npar, double* disp, double* velo,
                        int* dflag, int* iflag, double* field, double* dfddis, double* dfdvel);
-
-// A partial the routine did not write keeps this NaN (its payload tells it from a NaN the
-// routine computed): that matrix then comes from central differences.
-constexpr std::uint64_t kUnsetBits = 0x7ff8dead0000beefULL;
-double unset() {
-  double v;
-  std::memcpy(&v, &kUnsetBits, sizeof v);
-  return v;
-}
-bool isUnset(double v) {
-  std::uint64_t b;
-  std::memcpy(&b, &v, sizeof b);
-  return b == kUnsetBits;
-}
 
 // The last evaluation on this thread: the Newton matrix's colour passes evaluate every element
 // at the same state, and the routine is called once for them all.
@@ -117,7 +104,7 @@ void Field::evaluate(double time, const double disp[6], const double velo[6], bo
 void Field::compute(double time, const double* disp, const double* velo, bool partials,
                     double* field, double* kd, double* cd) const {
   const double nan = std::numeric_limits<double>::quiet_NaN();
-  for (int k = 0; k < 36; ++k) kd[k] = cd[k] = unset();
+  for (int k = 0; k < 36; ++k) kd[k] = cd[k] = unsetPartial();
   for (int k = 0; k < 6; ++k) field[k] = nan;
   const bool ok =
       raw(time, disp, velo, partials ? 1 : 0, 0, field, kd, cd) && finite(field, 6, time);
@@ -125,8 +112,8 @@ void Field::compute(double time, const double* disp, const double* velo, bool pa
     // A matrix with any entry left unset comes whole from central differences.
     bool kSet = true, cSet = true;
     for (int k = 0; k < 36; ++k) {
-      kSet = kSet && !isUnset(kd[k]);
-      cSet = cSet && !isUnset(cd[k]);
+      kSet = kSet && !isUnsetPartial(kd[k]);
+      cSet = cSet && !isUnsetPartial(cd[k]);
     }
     if (!kSet) difference(time, disp, velo, false, kd);
     if (!cSet) difference(time, disp, velo, true, cd);
@@ -141,14 +128,13 @@ void Field::compute(double time, const double* disp, const double* velo, bool pa
 // as for the evaluation subroutines (docs/user-subroutines.md, "The protocol"), DFLAG = 0.
 void Field::difference(double time, const double* disp, const double* velo, bool ofVelocity,
                        double* out) const {
-  const double rel = std::cbrt(DBL_EPSILON);
   double d[6], v[6], plus[6], minus[6], kd[36], cd[36];
   for (int col = 0; col < 6; ++col) {
     std::memcpy(d, disp, sizeof d);
     std::memcpy(v, velo, sizeof v);
     double* x = ofVelocity ? v : d;
     const double base = x[col];
-    const double h = (base + rel * std::max(1.0, std::abs(base))) - base;
+    const double h = differenceStep(base);
     x[col] = base + h;
     raw(time, d, v, 0, 0, plus, kd, cd);
     x[col] = base - h;
