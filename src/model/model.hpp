@@ -424,6 +424,10 @@ struct DebugSettings {
 struct Model {
   std::string title;
   std::string file;
+  // The line of every statement of the data set that has an id, built or refused: a function
+  // naming an element whose statement was refused says so instead of "does not exist"
+  // (model_builder.cpp, bindParsedExpression).
+  std::map<std::pair<std::string, long>, int> statementLines;
   Units units;
   Eigen::Vector3d gravity = Eigen::Vector3d::Zero();
   std::vector<Part> parts;

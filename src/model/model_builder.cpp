@@ -335,6 +335,23 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
       diags.error(at, subject, call.name + ": " + msg, hint);
       ok = false;
     };
+    // A read-back of an element that is not in the model: either the data set has no such
+    // statement, or its statement was refused (its own errors are reported at its line).
+    auto failMissingElement = [&](const std::string& function, long eid) {
+      const std::string statement = function == "SPDP"    ? "SPRINGDAMPER"
+                                    : function == "BUSH"  ? "BUSHING"
+                                    : function == "VTORQ" ? "VTORQUE"
+                                                          : function;
+      const std::string subjectText = statement + "/" + std::to_string(eid);
+      const auto line = model.statementLines.find({statement, eid});
+      if (line != model.statementLines.end())
+        fail(subjectText + " (line " + std::to_string(line->second) +
+                 ") was not built: its statement has errors, reported at its line",
+             "Correct " + subjectText + "; this reference then needs no change.");
+      else
+        fail(subjectText + " does not exist",
+             "Use the id of a " + statement + " statement of this data set.");
+    };
     auto marker = [&](size_t k, bool allowZero) -> int {
       if (k >= call.args.size()) return -1;
       long idv = call.args[k];
@@ -389,9 +406,7 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
         for (size_t q = 0; q < model.sforces.size(); ++q)
           if (model.sforces[q].id == eid) found = static_cast<int>(q);
       }
-      if (found < 0)
-        fail(call.name + "/" + std::to_string(eid) + " does not exist",
-             "Use the id of a " + call.name + " statement of this data set.");
+      if (found < 0) failMissingElement(call.name, eid);
       m.element = found;
       if (m.atJ != 0 && m.atJ != 1) fail("the second argument must be 0 (at I) or 1 (at J)", "");
       if (m.component < 1 || m.component > 8)
@@ -414,8 +429,7 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
       m.component = call.args.size() > 2 ? static_cast<int>(call.args[2]) : 0;
       m.k = marker(3, true);
       if (m.element < 0) {
-        fail("NFORCE/" + std::to_string(eid) + " does not exist",
-             "Use the id of a NFORCE statement of this data set.");
+        failMissingElement("NFORCE", eid);
       } else if (m.i >= 0) {
         const MultiPointForce& nf = model.nforces[m.element];
         if (m.i != nf.jMarker &&
@@ -461,6 +475,8 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   model = Model{};
   model.title = dataset.title;
   model.file = dataset.file;
+  for (const Statement& s : dataset.statements)
+    if (s.id) model.statementLines.emplace(std::make_pair(s.name, *s.id), s.where.line);
   buildDataElements(dataset, model, diags);  // SPLINE, CURVE, MATRIX, STRING first
   buildSensors(dataset, model, diags);       // before any expression: SENVAL(id) reads them
 

@@ -57,6 +57,9 @@ TEST(SForceBuilder, WrongForcesAreLocated) {
                         "SFORCE/2, TRANSLATION, I=20, J=99, FUNCTION=1\n"                // 9
                         "SFORCE/3, TRANSLATION, I=20, J=10, FUNCTION=USER(1)\n"          // 10
                         "SFORCE/4, TRANSLATION, I=20, J=10, FUNCTION=SFORCE(7,0,1,0)\n"  // 11
+                        // SFORCE/2 is in the data set but refused (line 9): the reference
+                        // says so instead of "does not exist".
+                        "SFORCE/5, TRANSLATION, I=20, J=10, FUNCTION=SFORCE(2,0,1,0)\n"  // 12
                         "END\n");
   EXPECT_FALSE(b.ok);
   EXPECT_EQ(
@@ -73,7 +76,10 @@ TEST(SForceBuilder, WrongForcesAreLocated) {
           "statement, or openmss run --user-library LIB); docs/user-subroutines.md says how to "
           "build one.",
           "f.adm:11:45: error: SFORCE/4: SFORCE: SFORCE/7 does not exist. Use the id of a "
-          "SFORCE statement of this data set."}));
+          "SFORCE statement of this data set.",
+          "f.adm:12:45: error: SFORCE/5: SFORCE: SFORCE/2 (line 9) was not built: its statement "
+          "has errors, reported at its line. Correct SFORCE/2; this reference then needs no "
+          "change."}));
 }
 
 TEST(RequestBuilder, KindsMarkersAndColumns) {
