@@ -183,10 +183,10 @@ TEST(A02SingularPassage, MersonAtTheLoosestAndTightestError) {
 // is that of a second-order method under a per-step local error test, so it falls about as
 // ERROR^(2/3); with the I3 velocity test (docs/integrators.md, "HHT's velocity test") it is
 // 2-3x smaller at the same ERROR. Measured largest B0 error (before the velocity test -> with
-// it): 7.7e-2 -> 3.6e-2 m at 1e-6, 3.9e-3 -> 1.3e-3 m at 1e-8 (1.0e-3 -> 3.5e-4 m at t = 10 s),
-// 7.4e-4 -> 3.8e-4 m at 1e-9. Bounds: at 1e-8, 2.5e-3 m over all outputs (fails without the
-// velocity test) and the benchmark's 1e-3 m at t = 10 s, one of its comparison times (2.9x
-// room); at 1e-9 the benchmark's 1e-3 m over all outputs (2.6x room).
+// it): 7.7e-2 -> 3.6e-2 m at 1e-6, 3.9e-3 -> 1.2e-3 m at 1e-8 (1.0e-3 -> 3.1e-4 m at t = 10 s),
+// 7.4e-4 -> 3.7e-4 m at 1e-9. Bounds: at 1e-8, 2.5e-3 m over all outputs (fails without the
+// velocity test) and the benchmark's 1e-3 m at t = 10 s, one of its comparison times (3.2x
+// room); at 1e-9 the benchmark's 1e-3 m over all outputs (2.7x room).
 TEST(A02SingularPassage, Hht) {
   const Outcome o = runA02("HHT", 1e-8);
   EXPECT_EQ(o.status, 0) << o.output;
