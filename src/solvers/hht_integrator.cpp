@@ -24,8 +24,9 @@ constexpr double kResidualNoise = 1e-6;
 // ... or whose unscaled residual has, BdfIntegrator's kRawResidualNoise: the scaled residual is
 // dominated by the constraint rows times 1/h^2, which through a flat passage keep the positions'
 // round-off along the extra degrees of freedom above kResidualNoise while every equation is
-// solved to round-off (A02, N = 4, ERROR = 1e-9 with the I3 velocity test: without it the run
-// stopped at the flat passage at t = 9.05 s, the steps shrunk to 2.5e-8 s by corrector failures).
+// solved to round-off (A02 with the I3 velocity test, without this rule: N = 4 at ERROR = 1e-9
+// stopped at the flat passage at t = 9.05 s, the steps shrunk to 2.5e-8 s by corrector
+// failures; N = 40 at 1e-8 at t = 7.1 s).
 constexpr double kRawResidualNoise = 1e-6;
 // The I3 velocity test's horizon in steps, BdfIntegrator's kVelocityTestSteps (docs/integrators.md,
 // "HHT's velocity test").
