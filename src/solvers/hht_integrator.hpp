@@ -6,7 +6,9 @@
 // position constraints hold exactly at every step. The unknowns' roles (position, velocity,
 // multiplier) come from DaeProblem::role; a first-order state (DIFF) follows the gamma rule.
 // ALPHA = 0 with BETA, GAMMA free is NEWMARK. Step size from the position truncation error
-// (beta - 1/6) h^3 q''', steps landing on output times, modified Newton on the corrector.
+// (beta - 1/6) h^3 q''' and the I3 velocity test (the gamma rule's velocity truncation error
+// weighed as the displacement it makes over two steps, docs/integrators.md "HHT's velocity
+// test"), steps landing on output times, modified Newton on the corrector.
 
 #include <Eigen/Dense>
 #include <limits>
@@ -18,7 +20,8 @@
 namespace openmss::solvers {
 
 struct HhtSettings {
-  double error = 1e-3;  // ERROR: local error tolerance on positions (relative and absolute)
+  double error = 1e-3;  // ERROR: local error tolerance (relative and absolute; positions, and
+                        // velocities through the I3 velocity test)
   double hinit = 0.0;   // HINIT (0: HMAX / 100)
   double hmax = std::numeric_limits<double>::infinity();  // HMAX
   double hmin = 0.0;          // HMIN: smallest step before the run fails (0: 1e-10 HMAX)
