@@ -369,5 +369,30 @@ TEST(UconRoutine, ReloadContinuesAsIfNeverStopped) {
   EXPECT_GT(std::abs(plain[10].rows[0][0] - plain[5].rows[0][0]), 1e-2);  // it moved
 }
 
+// DOF and redundancy: each UCON removes one degree of freedom from the Gruebler count (the
+// pendulum: 6 - 2 = 4), and a UCON restating a JPRIM INPLANE is found redundant and removed,
+// named, leaving the rank's two degrees of freedom.
+TEST(UconRoutine, CountedInTheDofAndFoundRedundant) {
+  const fs::path dir = testing::scratch("ucon-dof");
+  testing::write(dir / "p.adm", pendulum(uconPendulum(kC)));
+  testing::Result r = testing::run("run p.adm --end 0.1", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  std::string msg = testing::slurp(dir / "p.msg");
+  EXPECT_NE(msg.find("Gruebler count:       4 degrees of freedom"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Degrees of freedom:   4"), std::string::npos) << msg;
+  testing::write(dir / "r.adm",
+                 heightModel("JPRIM/1, INPLANE, I=20, J=11\nUCON/1, FUNCTION=USER(1, 2, 0.3), "
+                             "ROUTINE=" +
+                             quoted(kF77, "") + "\n"));
+  r = testing::run("run r.adm --end 0.1", dir);
+  EXPECT_EQ(r.status, 0) << r.output;
+  msg = testing::slurp(dir / "r.msg");
+  EXPECT_NE(msg.find("Gruebler count:       1 degrees of freedom"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("Degrees of freedom:   2"), std::string::npos) << msg;
+  EXPECT_NE(msg.find("redundant constraint equation removed: UCON/1 equation UCOSUB F = 0"),
+            std::string::npos)
+      << msg;
+}
+
 }  // namespace
 }  // namespace openmss
