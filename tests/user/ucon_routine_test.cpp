@@ -431,5 +431,22 @@ TEST(UconRoutine, EveryIntegratorAndTheLinearization) {
   std::printf("UCON pendulum eigenvalue %.10g i, sqrt(g/L) = %.10g\n", im, std::sqrt(kG / kL));
 }
 
+// DEACTIVATE/UCON releases the CM (it falls off the circle: |r| = 1.10 at t = 0.4) and
+// ACTIVATE/UCON puts it back on (the initial conditions reassemble it: |r| = 1 at t = 0.6 to
+// the .req's digits).
+TEST(UconRoutine, DeactivateAndActivate) {
+  const auto rows = study("ucon-switch", pendulum(uconPendulum("")),
+                          {"SIMULATE/DYNAMICS, END=0.2, STEPS=2", "DEACTIVATE/UCON, ID=1",
+                           "SIMULATE/DYNAMICS, END=0.4, STEPS=2", "ACTIVATE/UCON, ID=1",
+                           "SIMULATE/DYNAMICS, END=0.6, STEPS=2", "STOP"});
+  // Rows: 0, 0.1, 0.2 | 0.2, 0.3, 0.4 (free) | 0.4 (reassembled), 0.5, 0.6.
+  ASSERT_EQ(rows.size(), 9u);
+  auto radius = [&rows](size_t k) { return std::hypot(rows[k].rows[0][0], rows[k].rows[0][1]); };
+  EXPECT_NEAR(radius(2), kL, 2e-6);  // t = 0.2, held
+  EXPECT_GT(radius(5), kL + 0.05);   // t = 0.4, free
+  EXPECT_NEAR(radius(6), kL, 2e-6);  // t = 0.4, put back on the circle
+  EXPECT_NEAR(radius(8), kL, 2e-6);  // t = 0.6, held
+}
+
 }  // namespace
 }  // namespace openmss
