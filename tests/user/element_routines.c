@@ -196,3 +196,12 @@ void Vtosub(const struct sAdamsVtorque* v, double time, int dflag, int iflag, do
   result[1] = 0.0;
   result[2] = -p[0] * (fnc("AZ", i, j, 2) - p[2]) - p[1] * fnc("WZ", i, j, 2);
 }
+
+/* USRMES from a REQSUB: one message printed (MSGFLG true) and one not (false); F3 = TIME. */
+void Usrmes_req(const struct sAdamsRequest* r, double time, int iflag, double* out) {
+  for (int k = 0; k < 8; ++k) out[k] = 0.0;
+  out[1] = time;
+  if (iflag != 0) return;
+  c_usrmes(1, "C REQSUB says hello", r->ID, "INFO");
+  c_usrmes(0, "never printed", r->ID, "INFO");
+}
