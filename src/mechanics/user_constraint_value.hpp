@@ -8,6 +8,8 @@
 // (q - value(q)) carries exactly the first and second derivatives along the state (its terms
 // of third order vanish at that depth), as for COUPLER's COUSUB (user_coupler_value.hpp).
 
+#include <type_traits>
+
 #include "common/dual.hpp"
 #include "mechanics/constraint_set.hpp"
 #include "mechanics/user_coupler_value.hpp"
@@ -15,10 +17,22 @@
 
 namespace openmss::mechanics {
 
+// The derivative order a scalar carries: 0 for double, 2 for a second-order dual, 1 for any
+// other first-order scalar (Dual<double>, the element-local Newton matrix's DualVec).
+template <class S>
+constexpr int uconOrder() {
+  if constexpr (std::is_same_v<S, double>)
+    return 0;
+  else if constexpr (DualDepth<S>::value >= 2)
+    return 2;
+  else
+    return 1;
+}
+
 template <class S>
 S userConstraintValue(const ConstraintEquation& eq, const Frame<S>* frames) {
-  constexpr int order = DualDepth<S>::value;
-  static_assert(order <= 2, "XMATRX gives second partials only");
+  constexpr int order = uconOrder<S>();
+  static_assert(DualDepth<S>::value <= 2, "XMATRX gives second partials only");
   constexpr int kMax = user::kMaxUconVariables;
   const int n = static_cast<int>(eq.measureSlots.size());
   S q[kMax];
