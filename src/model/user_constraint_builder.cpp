@@ -1,6 +1,7 @@
 #include "model/user_constraint_builder.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "model/user_routine_binding.hpp"
@@ -38,6 +39,24 @@ int bodyFrameMarker(const Model& model, int p) {
       return m;
   }
   return -1;
+}
+
+// Whether UCOSUB reads TIME: F at the data set's configuration q0, at TIME = 0 and 1e-3, must
+// be the same to the bit (docs/user-subroutines.md, "UCON": rheonomic UCONs are refused, as
+// no time partials are asked of the routine). A value that is not finite is left to the run,
+// which stops on it naming the routine.
+bool dependsOnTime(const Model& model, const UserConstraint& u) {
+  const int n = static_cast<int>(u.codes.size());
+  double q[user::kMaxUconVariables] = {};
+  for (int k = 0; k < n; ++k) {
+    const Part& part = model.parts[model.markers[u.markers[k]].part];
+    const int code = u.codes[k];
+    q[k] = code < 100 ? part.position[code - 11] : part.orientation(code % 10 - 1, code / 100 - 1);
+  }
+  double f0 = 0.0, f1 = 0.0;
+  u.user->evaluate(0.0, q, n, 0, &f0, nullptr, nullptr);
+  u.user->evaluate(1e-3, q, n, 0, &f1, nullptr, nullptr);
+  return std::isfinite(f0) && std::isfinite(f1) && f0 != f1;
 }
 
 void buildOne(const Statement& s, Model& model, Diagnostics& diags) {
@@ -123,6 +142,15 @@ void buildOne(const Statement& s, Model& model, Diagnostics& diags) {
                 "UCOVAR declares variables of " + std::to_string(parts.size()) + " parts",
                 "A UCON may read at most " + std::to_string(UserConstraint::kMaxParts) +
                     " parts; split the constraint.");
+    ok = false;
+  }
+  if (ok && dependsOnTime(model, u)) {
+    diags.error(fn->where, s.subject(),
+                "UCOSUB's value at the data set's configuration changes between TIME = 0 and "
+                "TIME = 1e-3: a constraint depending on TIME explicitly is not supported yet",
+                "Write the time-dependent part as a MOTION or a JPRIM/JOINT driven by one; a "
+                "UCON must depend on the part variables only (docs/user-subroutines.md, "
+                "\"UCON\").");
     ok = false;
   }
   if (ok) model.ucons.push_back(std::move(u));

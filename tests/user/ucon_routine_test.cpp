@@ -232,6 +232,13 @@ TEST(UconRoutine, BadStatementsAndDeclarationsAreLocatedErrors) {
   all = errors(
       heightModel("UCON/1, FUNCTION=USER(1, 2, 0.3), ROUTINE=" + quoted(kC, "Angle_ucon") + "\n"));
   EXPECT_NE(all.find("code 14 is not supported"), std::string::npos) << all;
+  // F = z - 0.3 - 0.1 TIME: the build reads it at TIME = 0 and 1e-3 and refuses it, located.
+  all = errors(heightModel(
+      "UCON/1, FUNCTION=USER(1, 2, 0.3, 0.1), ROUTINE=" + quoted(kC, "Time_ucon") + "\n"));
+  EXPECT_NE(all.find("u.adm:13:"), std::string::npos) << all;
+  EXPECT_NE(all.find("a constraint depending on TIME explicitly is not supported yet"),
+            std::string::npos)
+      << all;
   all = errors(heightModel("UCON/1, FUNCTION=USER(1, 7, 0.3), ROUTINE=" + lib + "\n"));
   EXPECT_NE(all.find("no moving PART has id 7"), std::string::npos) << all;
   all = errors(heightModel("UCON/1, FUNCTION=USER(1, 1, 0.3), ROUTINE=" + lib + "\n"));

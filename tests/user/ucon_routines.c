@@ -6,7 +6,8 @@
  *      PERPENDICULAR between the CM markers)
  * Ucosub returns F, dF/dq and d2F/dq2 (30 x 30, column-major) as IDRSEL asks.
  * Nan_ucon: Ucosub, but NaN from TIME >= PAR(NPAR). Stop_ucon: ERRMES STOP from TIME >=
- * PAR(NPAR). Novar_ucon never calls UCOVAR. Angle_ucon declares code 14 (not supported). */
+ * PAR(NPAR). Novar_ucon never calls UCOVAR. Angle_ucon declares code 14 (not supported).
+ * Time_ucon depends on TIME (refused). */
 #include <math.h>
 
 #include "user/openmss_usersub.h"
@@ -83,4 +84,12 @@ void Angle_ucon(const struct sAdamsUcon* u, double time, const double* q, const 
   (void)time, (void)q, (void)idrsel, (void)array, (void)xmatrx;
   if (iflag == 3) c_ucovar(u->ID, 1, parts, 1, codes);
   *scalar = 0.0;
+}
+
+/* Time_ucon: Ucosub's mode 1 with a height rising at PAR(4) per second, F = z_A - PAR(3) -
+ * PAR(4) TIME: rheonomic, which the model build refuses. */
+void Time_ucon(const struct sAdamsUcon* u, double time, const double* q, const int* idrsel,
+               int iflag, double* scalar, double* array, double* xmatrx) {
+  Ucosub(u, time, q, idrsel, iflag, scalar, array, xmatrx);
+  if (iflag == 0 && idrsel[0]) *scalar -= u->PAR[3] * time;
 }
