@@ -253,6 +253,7 @@ std::string modelFingerprint(const mechanics::MultibodySystem& system,
   ids("COUPLER", m.couplers);
   ids("GEAR", m.gears);
   ids("GCON", m.gcons);
+  if (!m.ucons.empty()) ids("UCON", m.ucons);  // absent otherwise: older save files still match
   ids("SFORCE", m.sforces);
   ids("VARIABLE", m.variables);
   ids("DIFF", m.diffs);

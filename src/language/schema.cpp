@@ -36,9 +36,9 @@ std::vector<StatementSpec> finalStatementTable() {
                     "BEAM", "VFORCE", "VTORQUE", "GFORCE", "EQUILIBRIUM", "IC", "INTEGRATOR",
                     "KINEMATICS", "DEBUG", "MATERIAL", "CONTACT",
                     // what model/model_builder.cpp builds besides (its supportedStatements)
-                    "NFORCE", "JPRIM", "GCON", "PTCV", "CVCV", "COUPLER", "GEAR", "FRICTION",
-                    "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO", "PINPUT", "POUTPUT", "GSE",
-                    "SENSOR", "RESULTS", "SPLINE", "CURVE", "MATRIX", "STRING"});
+                    "NFORCE", "JPRIM", "GCON", "UCON", "PTCV", "CVCV", "COUPLER", "GEAR",
+                    "FRICTION", "VARIABLE", "DIFF", "ARRAY", "LSE", "TFSISO", "PINPUT", "POUTPUT",
+                    "GSE", "SENSOR", "RESULTS", "SPLINE", "CURVE", "MATRIX", "STRING"});
   return t;
 }
 
@@ -46,17 +46,16 @@ std::vector<StatementSpec> finalCommandTable() {
   auto t = buildCommandTable(buildStatementTable());
   assignAutomaticAbbreviations(t);
   // FILE (MODEL, COMMAND) and HELP are carried out by the program around the session.
-  markSupported(t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "WSTIFF", "DSTIFF", "SIMULATE", "STOP",
-                    "FILE", "HELP", "EQUILIBRIUM", "IC", "KINEMATICS", "LINEAR",
-                    "DEBUG", "SAVE", "RELOAD",
-                    // commands/element_commands.cpp and info_commands.cpp
-                    "ACTIVATE", "DEACTIVATE", "PART", "MARKER", "JOINT", "MOTION", "GCON",
-                    "ACCGRAV", "BEAM", "BUSHING", "FIELD", "GFORCE", "SFORCE", "SPRINGDAMPER",
-                    "VFORCE", "VTORQUE", "ARRAY", "SPLINE", "STRING", "VARIABLE", "DIFF",
-                    "SENSOR", "REQUEST", "INFO", "SHOW", "TIME", "MENU", "PREFERENCES",
-                    "LSOLVER", "ENVIRONMENT",
-                    // commands/control_command.cpp (a user CONSUB)
-                    "CONTROL"});
+  markSupported(
+      t, {"OUTPUT", "INTEGRATOR", "GSTIFF", "WSTIFF", "DSTIFF", "SIMULATE", "STOP", "FILE", "HELP",
+          "EQUILIBRIUM", "IC", "KINEMATICS", "LINEAR", "DEBUG", "SAVE", "RELOAD",
+          // commands/element_commands.cpp and info_commands.cpp
+          "ACTIVATE", "DEACTIVATE", "PART", "MARKER", "JOINT", "MOTION", "GCON", "ACCGRAV", "BEAM",
+          "BUSHING", "FIELD", "GFORCE", "SFORCE", "SPRINGDAMPER", "VFORCE", "VTORQUE", "ARRAY",
+          "SPLINE", "STRING", "VARIABLE", "DIFF", "SENSOR", "REQUEST", "INFO", "SHOW", "TIME",
+          "MENU", "PREFERENCES", "LSOLVER", "ENVIRONMENT",
+          // commands/control_command.cpp (a user CONSUB)
+          "CONTROL"});
   return t;
 }
 

@@ -121,6 +121,7 @@ int ConstraintSet::grueblerCount(const model::Model& model) {
   count -= static_cast<int>(model.motions.size());
   count -= static_cast<int>(model.couplers.size() + model.gears.size());
   count -= static_cast<int>(model.gcons.size());
+  count -= static_cast<int>(model.ucons.size());  // one each (docs/theory.md §5f)
   count -= 2 * static_cast<int>(model.ptcvs.size());  // PTCV removes two (docs/theory.md §5d)
   count -= 2 * static_cast<int>(model.cvcvs.size());  // CVCV removes two (docs/theory.md §5e)
   return count;
@@ -212,6 +213,29 @@ ConstraintEquation generalEquation(const model::Model& model, int index) {
   if (g.iMarker >= 0 && readsI) slot(g.iMarker);
   for (const model::Measure& m : g.function.measures)
     e.measureSlots.push_back({slot(m.i), slot(m.j), slot(m.k)});
+  if (markers.size() == 1) markers.push_back(markers[0]);
+  e.iMarker = markers[0];
+  e.jMarker = markers[1];
+  e.moreMarkers.assign(markers.begin() + 2, markers.end());
+  return e;
+}
+
+// UCON (docs/theory.md §5f): the distinct body-frame markers of its variables become the
+// equation's frame slots, in the order UCOVAR first names them (a UCON of one part repeats its
+// marker: an equation has two slots, the second unread).
+ConstraintEquation userConstraintEquation(const model::Model& model, int index) {
+  const model::UserConstraint& u = model.ucons[index];
+  ConstraintEquation e;
+  e.kind = ConstraintEquation::Kind::User;
+  e.ucon = index;
+  e.userConstraint = u.user.get();
+  e.label = "UCOSUB F = 0";
+  std::vector<int> markers;
+  for (size_t k = 0; k < u.markers.size(); ++k) {
+    auto it = std::find(markers.begin(), markers.end(), u.markers[k]);
+    if (it == markers.end()) it = markers.insert(markers.end(), u.markers[k]);
+    e.measureSlots.push_back({static_cast<int>(it - markers.begin()), u.codes[k], 0});
+  }
   if (markers.size() == 1) markers.push_back(markers[0]);
   e.iMarker = markers[0];
   e.jMarker = markers[1];
@@ -436,6 +460,8 @@ ConstraintSet::ConstraintSet(const model::Model& model) {
     eqs_.push_back(gearEquation(model, k));
   for (int k = 0; k < static_cast<int>(model.gcons.size()); ++k)
     eqs_.push_back(generalEquation(model, k));
+  for (int k = 0; k < static_cast<int>(model.ucons.size()); ++k)
+    eqs_.push_back(userConstraintEquation(model, k));
   for (int k = 0; k < static_cast<int>(model.ptcvs.size()); ++k)
     for (int n = 0; n < 2; ++n) eqs_.push_back(pointCurveEquation(model, k, n));
   for (int k = 0; k < static_cast<int>(model.cvcvs.size()); ++k)
@@ -486,6 +512,8 @@ std::string ConstraintSet::describe(int k, const model::Model& model) const {
     return "PTCV/" + std::to_string(model.ptcvs[e.ptcv].id) + " equation " + e.label;
   if (e.cvcv >= 0)
     return "CVCV/" + std::to_string(model.cvcvs[e.cvcv].id) + " equation " + e.label;
+  if (e.ucon >= 0)
+    return "UCON/" + std::to_string(model.ucons[e.ucon].id) + " equation " + e.label;
   if (e.gcon >= 0)
     return "GCON/" + std::to_string(model.gcons[e.gcon].id) + " equation " + e.label;
   return "MOTION/" + std::to_string(model.motions[e.motion].id) + " equation " + e.label;

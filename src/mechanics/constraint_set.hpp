@@ -32,6 +32,7 @@ struct ConstraintEquation {
     Screw,              // z_J.(P_I - P_J) - ratio * (angle of x_I about z_J from x_J) - offset
     Coupled,            // sum of terms scale * (joint displacement - reference): COUPLER, GEAR
     General,            // a GCON's FUNCTION of marker measures (general_constraint.hpp)
+    User,               // a UCON's UCOSUB F(q) of part variables (user_constraint_value.hpp)
     PointCurve,         // PTCV: normal component `axisI` (0, 1) of I's offset from the
                         // nearest point of `curve` in J's (RM's) frame; helper axis `axisJ`
                         // (common/curve_projection.hpp, docs/theory.md §5d)
@@ -67,6 +68,7 @@ struct ConstraintEquation {
   int coupler = -1;  // index into Model::couplers, or -1
   int gear = -1;     // index into Model::gears, or -1
   int gcon = -1;     // index into Model::gcons, or -1
+  int ucon = -1;     // index into Model::ucons, or -1
   int ptcv = -1;     // index into Model::ptcvs, or -1
   int cvcv = -1;     // index into Model::cvcvs, or -1
   // PointCurve: the curve (owned by the Model) and the samples of its nearest-point search.
@@ -83,7 +85,9 @@ struct ConstraintEquation {
   // General: the GCON's bound FUNCTION (owned by the Model) and, per measure k, the frame slots
   // (indices s of eq.marker(s)) of its markers i, j and k; -1 = ground.
   const model::BoundExpression* function = nullptr;
+  // User: per variable k of q, {frame slot, UCOVAR code, 0}.
   std::vector<std::array<int, 3>> measureSlots;
+  const user::UserConstraintRoutine* userConstraint = nullptr;  // User: UCOSUB
   // Markers beyond iMarker and jMarker the equation reads (Coupled: I2, J2 [, I3, J3]);
   // geometry() receives the frames of iMarker, jMarker, then these.
   std::vector<int> moreMarkers;
@@ -168,6 +172,9 @@ class ConstraintSet {
 // GCON equations (general_constraint.hpp, included at the end of this header).
 template <class S>
 S generalConstraintValue(const ConstraintEquation& eq, const Frame<S>* frames);
+// UCON equations (user_constraint_value.hpp, included at the end of this header).
+template <class S>
+S userConstraintValue(const ConstraintEquation& eq, const Frame<S>* frames);
 
 template <class S>
 S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) {
@@ -236,6 +243,8 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
     }
     case K::General:
       return generalConstraintValue(eq, frames);
+    case K::User:
+      return userConstraintValue(eq, frames);
     case K::PointCurve:
       return pointCurveResiduals(*eq.curve, eq.axisJ, eq.curveSamples, j.a.tmul(i.p - j.p),
                                  eq.warm)[eq.axisI];
@@ -249,4 +258,5 @@ S ConstraintSet::geometry(const ConstraintEquation& eq, const Frame<S>* frames) 
 }  // namespace openmss::mechanics
 
 #include "mechanics/general_constraint.hpp"
+#include "mechanics/user_constraint_value.hpp"
 

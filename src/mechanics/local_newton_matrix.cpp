@@ -95,8 +95,10 @@ void LocalNewtonMatrix::planEquations(const JacobianPattern& p) {
   const auto& eqs = system_.constraints().equations();
   for (int k = 0; k < static_cast<int>(eqs.size()) && usable_; ++k) {
     const ConstraintEquation& eq = eqs[k];
-    if (eq.kind == ConstraintEquation::Kind::General || eq.markerCount() > 6) {
-      usable_ = false;  // reads marker measures through an expression: not planned here
+    if (eq.kind == ConstraintEquation::Kind::General ||
+        eq.kind == ConstraintEquation::Kind::User || eq.markerCount() > 6) {
+      // Reads marker measures through an expression or user code: not planned here.
+      usable_ = false;
       return;
     }
     EquationPlan plan;

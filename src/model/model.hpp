@@ -155,6 +155,20 @@ struct GeneralConstraint {
   SourceLocation where;
 };
 
+// UCON/id, FUNCTION=USER(r1, ..., r30) [, ROUTINE=lib::name]: UCOSUB's F(q) = 0 over the part
+// variables UCOVAR declared (docs/user-subroutines.md "UCON", docs/theory.md §5f). Variable k is
+// code codes[k] of the body frame of the part whose marker markers[k] sits at that frame
+// (origin at the CM, CM-marker axes): 11..13 the origin's x, y, z in ground, 100 a + 10 + c
+// (a, c = 1..3) component c in ground of the part's axis a.
+struct UserConstraint {
+  static constexpr int kMaxParts = 6;  // distinct parts: the equation's frame slots
+  long id = 0;
+  std::vector<int> markers;  // per variable, a marker at its part's body frame
+  std::vector<int> codes;    // per variable
+  std::shared_ptr<const user::UserConstraintRoutine> user;
+  SourceLocation where;
+};
+
 struct SForce {
   long id = 0;
   int iMarker = -1;
@@ -438,6 +452,7 @@ struct Model {
   std::vector<Coupler> couplers;  // COUPLER
   std::vector<Gear> gears;        // GEAR
   std::vector<GeneralConstraint> gcons;  // GCON
+  std::vector<UserConstraint> ucons;     // UCON
   std::vector<PointCurve> ptcvs;         // PTCV (point_curve_builder.cpp)
   std::vector<CurveCurve> cvcvs;         // CVCV (curve_curve_builder.cpp)
   std::vector<SForce> sforces;

@@ -11,6 +11,7 @@
 #include "model/friction_builder.hpp"
 #include "model/force_read_back_check.hpp"
 #include "model/general_constraint_builder.hpp"
+#include "model/user_constraint_builder.hpp"
 #include "model/graphics_builder.hpp"
 #include "model/joint_builder.hpp"
 #include "model/material_builder.hpp"
@@ -45,6 +46,8 @@ const std::set<std::string>& supportedStatements() {
                                           "COUPLER", "GEAR",
                                           // general constraints (general_constraint_builder)
                                           "GCON",
+                                          // user constraints (user_constraint_builder.cpp)
+                                          "UCON",
                                           // point-to-curve (point_curve_builder.cpp)
                                           "PTCV",
                                           // curve-to-curve (curve_curve_builder.cpp)
@@ -79,6 +82,7 @@ struct StatementGroups {
   std::vector<const Statement*> userEquations;  // VARIABLE, DIFF, ARRAY, LSE, TFSISO, ...
   std::vector<const Statement*> couplings;      // COUPLER, GEAR
   std::vector<const Statement*> gcons;          // GCON
+  std::vector<const Statement*> ucons;          // UCON
   std::vector<const Statement*> ptcvs;          // PTCV
   std::vector<const Statement*> cvcvs;          // CVCV
   std::vector<const Statement*> frictions;      // FRICTION
@@ -147,6 +151,8 @@ void readStatements(const language::Dataset& dataset, Model& model, PartBuilder&
       groups.couplings.push_back(&s);
     } else if (s.name == "GCON") {
       groups.gcons.push_back(&s);
+    } else if (s.name == "UCON") {
+      groups.ucons.push_back(&s);
     } else if (s.name == "PTCV") {
       groups.ptcvs.push_back(&s);
     } else if (s.name == "CVCV") {
@@ -497,6 +503,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   buildCouplings(groups.couplings, model, diags);
   // GCON (general_constraint_builder.cpp): after every marker exists.
   buildGeneralConstraints(groups.gcons, model, diags);
+  buildUserConstraints(groups.ucons, model, diags);  // UCON (user_constraint_builder.cpp)
   buildPointCurves(groups.ptcvs, model, diags);  // PTCV (point_curve_builder.cpp)
   buildCurveCurves(groups.cvcvs, model, diags);  // CVCV (curve_curve_builder.cpp)
   // SPRINGDAMPER, BUSHING, FIELD, BEAM, VFORCE, VTORQUE, GFORCE (force_element_builder.cpp).

@@ -25,4 +25,14 @@ class CouplerRoutine {
                         double* first, double* second) const = 0;
 };
 
+// UCOSUB (UCON with FUNCTION=USER): the constraint F(q) = 0 over the part variables q that
+// UCOVAR declared (docs/user-subroutines.md, "UCON"). order >= 1 adds ARRAY, dF/dq (n values),
+// order 2 XMATRX, d2F/dq2 (n x n column-major). A stopped routine gives NaN everywhere.
+class UserConstraintRoutine {
+ public:
+  virtual ~UserConstraintRoutine() = default;
+  virtual void evaluate(double time, const double* q, int n, int order, double* value,
+                        double* first, double* second) const = 0;
+};
+
 }  // namespace openmss::user

@@ -255,6 +255,24 @@ typedef void adams_c_Couxx(const struct sAdamsCoupler* coupler, double time, dou
 typedef void adams_c_Couxx2(const struct sAdamsCoupler* coupler, double time, double* disp,
                             int iflag, double* d2fda2);
 
+/* UCON/id, FUNCTION=USER(...): with IFLAG = 3 the routine declares its variables with c_ucovar
+ * (LPARTS[k] a PART id, LVARS[k] its code: 11, 12, 13 the CM's x, y, z in ground; 111..113,
+ * 211..213, 311..313 the ground components of the part's x, y, z axis). With IFLAG = 0 it gets
+ * their values in q (NQ of them) and returns, as IDRSEL[0], IDRSEL[1], IDRSEL[2] ask (1: wanted,
+ * 0: not), the constraint value F (*scalar), dF/dq (array, NQ values) and d2F/dq2 (xmatrx, 30 x
+ * 30 column-major: d2F/dq_m dq_n at m + 30 n). ADAMS has no C-style UCOSUB: this interface is
+ * OpenMSS's (docs/user-subroutines.md, "UCON"). */
+struct sAdamsUcon {
+  int ID;
+  int NPAR;
+  const double* PAR;
+  int NQ;
+};
+typedef void adams_c_Ucosub(const struct sAdamsUcon* ucon, double time, const double* q,
+                            const int* idrsel, int iflag, double* scalar, double* array,
+                            double* xmatrx);
+void c_ucovar(int id, int nparts, const int* lparts, int nvars, const int* lvars);
+
 /* SPLINE/id, FILE=..., BLOCK=...: the reader stores the data with c_put_spline. */
 struct sAdamsSpline {
   int ID;

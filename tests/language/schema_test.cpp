@@ -64,9 +64,8 @@ TEST(Schema, CoversTheCommandList) {
 TEST(Schema, MarksWhatTheSolverSupports) {
   EXPECT_TRUE(findStatementSpec("MARKER")->solverSupported);
   EXPECT_TRUE(findStatementSpec("END")->solverSupported);
-  for (const char* built : {"NFORCE", "JPRIM", "GCON", "PTCV", "CVCV", "FRICTION", "SENSOR"})
+  for (const char* built : {"NFORCE", "JPRIM", "GCON", "UCON", "PTCV", "CVCV", "FRICTION", "SENSOR"})
     EXPECT_TRUE(findStatementSpec(built)->solverSupported) << built;
-  EXPECT_FALSE(findStatementSpec("UCON")->solverSupported);
   EXPECT_FALSE(findStatementSpec("FLEX_BODY")->solverSupported);
   EXPECT_TRUE(findStatementSpec("CONTACT")->solverSupported);
   EXPECT_TRUE(findCommandSpec("SIMULATE")->solverSupported);

@@ -183,3 +183,25 @@ void Crash_sfo(const struct sAdamsSforce* s, double time, int dflag, int iflag,
   *result = spring(s->NPAR - 1, s->PAR + 1, &i, &j);
   if (!iflag && time >= s->PAR[0]) *result = *nowhere;
 }
+
+/* VTORQUE: a torsional spring-damper about z, T_z = -k (AZ(i,j) - a0) - c WZ(i,j) (torque on I
+ * in RM's axes), PAR = k, c, a0, i, j; the partials come from central differences. */
+void Vtosub(const struct sAdamsVtorque* v, double time, int dflag, int iflag, double* result) {
+  const double* p = v->PAR;
+  const int i = (int)p[3], j = (int)p[4];
+  (void)time;
+  (void)dflag;
+  (void)iflag;
+  result[0] = 0.0;
+  result[1] = 0.0;
+  result[2] = -p[0] * (fnc("AZ", i, j, 2) - p[2]) - p[1] * fnc("WZ", i, j, 2);
+}
+
+/* USRMES from a REQSUB: one message printed (MSGFLG true) and one not (false); F3 = TIME. */
+void Usrmes_req(const struct sAdamsRequest* r, double time, int iflag, double* out) {
+  for (int k = 0; k < 8; ++k) out[k] = 0.0;
+  out[1] = time;
+  if (iflag != 0) return;
+  c_usrmes(1, "C REQSUB says hello", r->ID, "INFO");
+  c_usrmes(0, "never printed", r->ID, "INFO");
+}

@@ -93,3 +93,17 @@ C     F2..F4 = DZ, VZ, VARVAL(v); F6..F8 = DIF(d), TIME, DZ VZ; PAR = i, j, v, d
       RESULT(7) = TIME
       RESULT(8) = DZ * VZ
       END
+
+C     USRMES from a REQSUB (ROUTINE=lib::Usrreq): one message printed (MSGFLG .TRUE.), one not;
+C     RESULT(2) = TIME. The strings reach USRMES with gfortran's hidden lengths.
+      SUBROUTINE USRREQ(ID, TIME, PAR, NPAR, IFLAG, RESULT)
+      INTEGER ID, NPAR, IFLAG, K
+      DOUBLE PRECISION TIME, PAR(*), RESULT(8)
+      DO 10 K = 1, 8
+        RESULT(K) = 0.0D0
+   10 CONTINUE
+      RESULT(2) = TIME
+      IF (IFLAG .NE. 0) RETURN
+      CALL USRMES(.TRUE., 'FORTRAN REQSUB says hello', ID, 'WARNING')
+      CALL USRMES(.FALSE., 'never printed', ID, 'INFO')
+      END

@@ -58,6 +58,33 @@ TEST(UtilitySubroutines, PolyChebyForcosAndShf) {
   EXPECT_EQ(err, 0);
 }
 
+// HAVSIN, FORSIN and BISTOP (issue 18's list; the expression functions they share are tested in
+// tests/expr): closed forms. HAVSIN h0 + (h1 - h0)/2 (1 - cos(pi (x - x0)/(x1 - x0))) and its
+// slope; FORSIN a0 + sum a_j sin(j w (x - x0)); BISTOP zero inside the gap, k (x1 - x)^e +
+// cmax |xdot| below it and -k (x - x2)^e - cmax xdot above it (past the STEP's width d).
+TEST(UtilitySubroutines, HavsinForsinAndBistop) {
+  int err = 1;
+  double v = 0.0;
+  c_havsin(1.5, 1.0, 3.0, 2.0, 5.0, 0, &v, &err);
+  EXPECT_NEAR(v, 4.0, 1e-15);
+  c_havsin(1.5, 1.0, 3.0, 2.0, 5.0, 1, &v, &err);
+  EXPECT_NEAR(v, std::acos(-1.0), 1e-14);
+  c_havsin(2.5, 1.0, 3.0, 2.0, 5.0, 0, &v, &err);
+  EXPECT_EQ(v, 5.0);
+  const double a[3] = {1.0, -2.0, 0.5};
+  c_forsin(0.3, 0.0, 2.0, a, 3, 0, &v, &err);
+  EXPECT_NEAR(v, 1.0 - 2.0 * std::sin(0.6) + 0.5 * std::sin(1.2), 1e-15);
+  EXPECT_EQ(err, 0);
+  double out[3] = {1.0, 1.0, 1.0};
+  c_bistop(1.5, 0.3, 1.0, 2.0, 1e3, 1.5, 20.0, 0.1, 0, out, &err);
+  EXPECT_EQ(out[0], 0.0);
+  c_bistop(0.8, -0.3, 1.0, 2.0, 1e3, 1.5, 20.0, 0.1, 0, out, &err);
+  EXPECT_NEAR(out[0], 1e3 * std::pow(0.2, 1.5) + 20.0 * 0.3, 1e-12);
+  c_bistop(2.2, 0.3, 1.0, 2.0, 1e3, 1.5, 20.0, 0.1, 0, out, &err);
+  EXPECT_NEAR(out[0], -1e3 * std::pow(0.2, 1.5) - 20.0 * 0.3, 1e-12);
+  EXPECT_EQ(err, 0);
+}
+
 TEST(UtilitySubroutines, ImpactPartialsMatchCentralDifferences) {
   int err = 1, compared = 0;
   auto force = [&](double x, double v) {
