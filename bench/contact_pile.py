@@ -16,6 +16,7 @@ binaries' .req files there with cmp). With --mujoco, the program bench/peers/muj
 pair elements and the 1000-sphere pile (499,500 statements) is measured only when asked.
 """
 import argparse
+import math
 import os
 import re
 import resource
@@ -153,6 +154,7 @@ def main():
     args = p.parse_args()
     if args.mujoco:
         compile_mujoco(args.mujoco)
+    per_step = []  # (N, OpenMSS CPU per step) of the sizes that ran
     for n in args.sizes:
         if args.keep:
             workdir = os.path.join(args.keep, str(n))
@@ -168,6 +170,7 @@ def main():
         if r["status"] == "ok":
             line += (f", {r['steps']} steps, {1e3 * r['cpu'] / max(r['steps'], 1):.3f} ms CPU/step"
                      f", mean height {r['height']:.6f} m")
+            per_step.append((n, r["cpu"] / max(r["steps"], 1)))
         else:
             line += f" ({r.get('note')})"
         print(line, flush=True)
@@ -176,6 +179,10 @@ def main():
             print(f"pile N={n}: MuJoCo RK4 dt={args.dt:g}: {q['status']} in {q['wall']:.2f} s "
                   f"wall, {q['cpu']:.2f} s CPU, {q['steps']} steps, mean height "
                   f"{q['height']:.6f} m", flush=True)
+    # The growth of the CPU per step between successive sizes, as N^p (the issue asks p <= 1.2).
+    for (n0, c0), (n1, c1) in zip(per_step, per_step[1:]):
+        if n1 != n0 and c0 > 0 and c1 > 0:
+            print(f"CPU per step N={n0} -> N={n1}: N^{math.log(c1 / c0) / math.log(n1 / n0):.2f}")
 
 
 if __name__ == "__main__":
