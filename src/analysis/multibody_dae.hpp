@@ -70,7 +70,7 @@ class MultibodyDae : public solvers::DaeProblem {
   // Radius factors of the near-pair pattern's margin (docs/theory.md §6c): a rebuild takes the
   // elements whose bounding spheres overlap with radii times kEnter; the pattern is kept while
   // it holds every element near at factor 1 and none is apart at factor kLeave.
-  static constexpr double kEnter = 1.25, kLeave = 1.5;
+  static constexpr double kEnter = 1.1, kLeave = 1.2;
 
  private:
   int scaleExponent(int i) const {
