@@ -6,7 +6,7 @@
 // end, then object index: a total order, so the sweep is deterministic) and only the objects
 // whose intervals overlap are tested, with the same boundingSpheresOverlap as the brute-force
 // test. The pad makes every pair the exact test accepts overlap along x, so the answer is the
-// brute force's to the bit (tests/contact/contact_sweep_test.cpp compares them). Elements are
+// brute force's to the bit (ContactPile.SweepEqualsBruteForce compares them). Elements are
 // returned ascending.
 
 #include <algorithm>
