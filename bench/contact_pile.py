@@ -11,7 +11,8 @@ integration steps and the final mean height of the spheres (from the .req: one D
 request per sphere). With --keep DIR the data set and every output stay in DIR/N (compare two
 binaries' .req files there with cmp). With --mujoco, the program bench/peers/mujoco_pile.cpp
 (compiled to that path first when it is missing) builds the same spheres and box in MuJoCo
-(soft contacts, RK4 at a fixed step) and its figures are printed beside ours. The pile is what the issue asks (100 and
+(soft contacts, RK4 at a fixed step) and its figures are printed beside ours. Last, the growth
+of OpenMSS's CPU per step between successive sizes is printed as N^p. The pile is what the issue asks (100 and
 1000 spheres); OpenMSS has one element per CONTACT statement, so N spheres cost N (N - 1) / 2
 pair elements and the 1000-sphere pile (499,500 statements) is measured only when asked.
 """
