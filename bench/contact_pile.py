@@ -11,11 +11,13 @@ integration steps and the final mean height of the spheres (from the .req: one D
 request per sphere). With --keep DIR the data set and every output stay in DIR/N (compare two
 binaries' .req files there with cmp). With --mujoco, the program bench/peers/mujoco_pile.cpp
 (compiled to that path first when it is missing) builds the same spheres and box in MuJoCo
-(soft contacts, RK4 at a fixed step) and its figures are printed beside ours. The pile is what the issue asks (100 and
+(soft contacts, RK4 at a fixed step) and its figures are printed beside ours. Last, the growth
+of OpenMSS's CPU per step between successive sizes is printed as N^p. The pile is what the issue asks (100 and
 1000 spheres); OpenMSS has one element per CONTACT statement, so N spheres cost N (N - 1) / 2
 pair elements and the 1000-sphere pile (499,500 statements) is measured only when asked.
 """
 import argparse
+import math
 import os
 import re
 import resource
@@ -153,6 +155,7 @@ def main():
     args = p.parse_args()
     if args.mujoco:
         compile_mujoco(args.mujoco)
+    per_step = []  # (N, OpenMSS CPU per step) of the sizes that ran
     for n in args.sizes:
         if args.keep:
             workdir = os.path.join(args.keep, str(n))
@@ -168,6 +171,7 @@ def main():
         if r["status"] == "ok":
             line += (f", {r['steps']} steps, {1e3 * r['cpu'] / max(r['steps'], 1):.3f} ms CPU/step"
                      f", mean height {r['height']:.6f} m")
+            per_step.append((n, r["cpu"] / max(r["steps"], 1)))
         else:
             line += f" ({r.get('note')})"
         print(line, flush=True)
@@ -176,6 +180,10 @@ def main():
             print(f"pile N={n}: MuJoCo RK4 dt={args.dt:g}: {q['status']} in {q['wall']:.2f} s "
                   f"wall, {q['cpu']:.2f} s CPU, {q['steps']} steps, mean height "
                   f"{q['height']:.6f} m", flush=True)
+    # The growth of the CPU per step between successive sizes, as N^p (the issue asks p <= 1.2).
+    for (n0, c0), (n1, c1) in zip(per_step, per_step[1:]):
+        if n1 != n0 and c0 > 0 and c1 > 0:
+            print(f"CPU per step N={n0} -> N={n1}: N^{math.log(c1 / c0) / math.log(n1 / n0):.2f}")
 
 
 if __name__ == "__main__":

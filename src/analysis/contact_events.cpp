@@ -46,14 +46,14 @@ ContactEventIntegrator::ContactEventIntegrator(solvers::Integrator& inner,
     : inner_(inner),
       system_(system),
       restartAtOnset_(restartAtOnset),
-      slots_(system.model(), system.layout()) {}
+      broad_(system.model(), system.layout()) {}
 
-std::vector<bool> ContactEventIntegrator::touching(const Eigen::VectorXd& y) const {
+std::vector<bool> ContactEventIntegrator::touching(const Eigen::VectorXd& y) {
   const auto& contacts = system_.model().contacts;
-  std::vector<bool> out(contacts.size());
+  std::vector<bool> out(contacts.size(), false);
   mechanics::contact::ContactKinematics<double> kin(system_.model(), system_.layout(), y.data(),
-                                                    &slots_);
-  for (size_t k = 0; k < contacts.size(); ++k) out[k] = touches(system_, contacts[k], kin);
+                                                    &broad_.slots());
+  for (const int k : broad_.near(y.data())) out[k] = touches(system_, contacts[k], kin);
   return out;
 }
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "mechanics/contact/contact_kinematics.hpp"
+#include "mechanics/contact/contact_broad_phase.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "solvers/integrator.hpp"
 
@@ -49,14 +49,16 @@ class ContactEventIntegrator final : public solvers::Integrator {
   static std::string describe(const ContactEvent& e);
 
  private:
-  // Which contacts touch (any contact point) in state y.
-  std::vector<bool> touching(const Eigen::VectorXd& y) const;
+  // Which contacts touch (any contact point) in state y: the narrow phase of the elements the
+  // broad phase finds near (the others have no point: contactLoads makes the same test).
+  std::vector<bool> touching(const Eigen::VectorXd& y);
 
   solvers::Integrator& inner_;
   const mechanics::MultibodySystem& system_;
   bool restartAtOnset_;
-  // The bodies and markers the contacts read: touching() computes each state once per call.
-  mechanics::contact::ContactSlots slots_;
+  // The broad phase of touching() (docs/theory.md §6c), with the bodies and markers the
+  // contacts read: touching() computes each state once per call.
+  mechanics::contact::ContactBroadPhase broad_;
   std::vector<bool> state_;  // at inner_.t()
   std::vector<ContactEvent> events_;
 };

@@ -1,5 +1,7 @@
 #include "analysis/multibody_dae.hpp"
 
+#include <algorithm>
+
 namespace openmss::analysis {
 namespace {
 
@@ -75,18 +77,50 @@ std::string MultibodyDae::variableName(int i) const {
 
 const Eigen::SparseMatrix<double>* MultibodyDae::pattern() {
   if (!havePattern_) {
-    pattern_ = mechanics::newtonMatrixPattern(system_);
+    // Near-pair pattern: before any state is known, no CONTACT couples (the first evaluation
+    // rebuilds it at its state).
+    std::vector<char> contacts;
+    if (nearContacts_) contacts.assign(system_.model().contacts.size(), 0);
+    pattern_ = mechanics::newtonMatrixPattern(system_, contacts);
     patternMatrix_ = pattern_.matrix();
     havePattern_ = true;
   }
   return &patternMatrix_;
 }
 
+void MultibodyDae::updateNearPattern(const Eigen::VectorXd& y) {
+  // docs/theory.md §6c, "Near-pair pattern": every element near at y (bounding spheres
+  // overlap: the only ones with a nonzero load or partial there) must be in the pattern; an
+  // element in it that is apart even at kLeave is dropped at the next rebuild, which takes the
+  // elements near at kEnter (a margin, so that the pattern is not rebuilt at every matrix).
+  bool rebuild = false;
+  for (int e : broadPhase_.near(y.data())) rebuild = rebuild || !pattern_.contacts[e];
+  if (!rebuild) {
+    size_t held = 0, kept = 0;
+    for (char c : pattern_.contacts) held += c != 0;
+    for (int e : broadPhase_.nearWithin(y.data(), kLeave)) kept += pattern_.contacts[e] != 0;
+    rebuild = kept != held;
+  }
+  if (!rebuild) return;
+  std::vector<char> contacts(system_.model().contacts.size(), 0);
+  for (int e : broadPhase_.nearWithin(y.data(), kEnter)) contacts[e] = 1;
+  pattern_ = mechanics::newtonMatrixPattern(system_, contacts);
+  patternMatrix_ = pattern_.matrix();
+  ++rebuilds_;
+}
+
 void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
                                       const Eigen::VectorXd& yp, double cj,
                                       Eigen::SparseMatrix<double>& jac) {
   pattern();
-  if (jac.nonZeros() != pattern_.nonZeros() || jac.rows() != pattern_.size) jac = patternMatrix_;
+  if (nearContacts_) updateNearPattern(y);
+  // The caller's matrix takes the current pattern when its structure differs (a near-pair
+  // rebuild may keep the count of nonzeros).
+  const bool same =
+      jac.isCompressed() && jac.rows() == pattern_.size && jac.nonZeros() == pattern_.nonZeros() &&
+      std::equal(pattern_.columnStart.begin(), pattern_.columnStart.end(), jac.outerIndexPtr()) &&
+      std::equal(pattern_.rowIndex.begin(), pattern_.rowIndex.end(), jac.innerIndexPtr());
+  if (!same) jac = patternMatrix_;
   system_.newtonMatrixSparse(t, y, yp, cj, pattern_, jac, work_);
   const std::vector<int> outside = system_.rowsOutsidePattern(t, y, yp, cj, jac, work_);
   if (outside.empty()) return;

@@ -1,6 +1,9 @@
 #pragma once
 // Adapts the mechanics' equations of motion to the integrators' DaeProblem interface.
 
+#include <vector>
+
+#include "mechanics/contact/contact_broad_phase.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "solvers/dae_problem.hpp"
 
@@ -8,7 +11,13 @@ namespace openmss::analysis {
 
 class MultibodyDae : public solvers::DaeProblem {
  public:
-  explicit MultibodyDae(const mechanics::MultibodySystem& system) : system_(system) {}
+  // nearContactPattern: the sparse pattern holds only the CONTACT elements near at the state
+  // where the matrix is evaluated, rebuilt when that set changes (docs/theory.md §6c,
+  // "Near-pair pattern"); false: every CONTACT couples its bodies, one fixed pattern.
+  explicit MultibodyDae(const mechanics::MultibodySystem& system, bool nearContactPattern = true)
+      : system_(system), nearContacts_(nearContactPattern && !system.model().contacts.empty()) {
+    if (nearContacts_) broadPhase_ = {system.model(), system.layout()};
+  }
 
   int size() const override { return system_.layout().size(); }
   void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
@@ -55,6 +64,13 @@ class MultibodyDae : public solvers::DaeProblem {
     return pattern_;
   }
   int patternRepairs() const { return repairs_; }
+  // Near-pair patterns built (the first one included); 0 without the near-pair pattern.
+  int patternRebuilds() const { return rebuilds_; }
+
+  // Radius factors of the near-pair pattern's margin (docs/theory.md §6c): a rebuild takes the
+  // elements whose bounding spheres overlap with radii times kEnter; the pattern is kept while
+  // it holds every element near at factor 1 and none is apart at factor kLeave.
+  static constexpr double kEnter = 1.1, kLeave = 1.2;
 
  private:
   int scaleExponent(int i) const {
@@ -63,7 +79,13 @@ class MultibodyDae : public solvers::DaeProblem {
     if (i >= l.userStates()) return 0;  // user equations (docs/theory.md §4a)
     return i % mechanics::StateLayout::kPerBody == mechanics::StateLayout::kMu ? 1 : 0;
   }
+  // Whether the near-pair pattern must be rebuilt for the state y (and then rebuilds it).
+  void updateNearPattern(const Eigen::VectorXd& y);
+
   const mechanics::MultibodySystem& system_;
+  bool nearContacts_ = false;
+  mechanics::contact::ContactBroadPhase broadPhase_;
+  int rebuilds_ = 0;
   mechanics::JacobianPattern pattern_;
   Eigen::SparseMatrix<double> patternMatrix_;
   mechanics::SparseJacobianWork work_;

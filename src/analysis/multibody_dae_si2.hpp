@@ -17,7 +17,7 @@ namespace openmss::analysis {
 class MultibodyDaeSi2 : public solvers::DaeProblem {
  public:
   explicit MultibodyDaeSi2(const mechanics::MultibodySystem& system)
-      : system_(system), i3_(system) {}
+      : system_(system), i3_(system, false) {}  // the SI2 pattern is built once: every CONTACT
 
   int baseSize() const { return system_.layout().size(); }
   int size() const override { return baseSize() + system_.layout().constraintEquations; }

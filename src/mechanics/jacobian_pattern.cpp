@@ -21,8 +21,9 @@ class PatternBuilder {
  public:
   // forceAndUserOnly: the rows of the force elements and user equations alone, unclaimed rows
   // left empty (forceAndUserPattern).
-  explicit PatternBuilder(const MultibodySystem& s, bool forceAndUserOnly = false)
-      : forceAndUserOnly_(forceAndUserOnly), s_(s), m_(s.model()), l_(s.layout()), rows_(static_cast<size_t>(l_.size())),
+  PatternBuilder(const MultibodySystem& s, const std::vector<char>& contacts,
+                 bool forceAndUserOnly = false)
+      : forceAndUserOnly_(forceAndUserOnly), contacts_(contacts), s_(s), m_(s.model()), l_(s.layout()), rows_(static_cast<size_t>(l_.size())),
         claimed_(static_cast<size_t>(l_.size()), false), dense_(static_cast<size_t>(l_.size()), false) {}
 
   std::vector<std::vector<int>> build() {
@@ -295,6 +296,9 @@ class PatternBuilder {
   void forceElements() {
     const ForceElements& fe = s_.forceElements();
     for (const ForceElementRef& e : fe.elements()) {
+      // A CONTACT left out of a near-pair pattern (its bodies apart; theory §6c).
+      if (e.kind == ForceElementKind::Contact && !contacts_.empty() && !contacts_[e.index])
+        continue;
       Dependencies d;
       const int i = fe.iMarker(e), j = fe.jMarker(e);
       addElementReads(d, e);
@@ -375,6 +379,7 @@ class PatternBuilder {
   }
 
   bool forceAndUserOnly_;
+  const std::vector<char>& contacts_;  // empty: every CONTACT
   mutable int depth_ = 0;  // nesting of addElementReads (read-backs of read-backs)
   const MultibodySystem& s_;
   const model::Model& m_;
@@ -419,14 +424,20 @@ JacobianPattern patternFromRows(int size, std::vector<std::vector<int>> rows) {
   return p;
 }
 
-JacobianPattern newtonMatrixPattern(const MultibodySystem& system) {
-  PatternBuilder builder(system);
-  return patternFromRows(system.layout().size(), builder.build());
+JacobianPattern newtonMatrixPattern(const MultibodySystem& system,
+                                    const std::vector<char>& contacts) {
+  PatternBuilder builder(system, contacts);
+  JacobianPattern p = patternFromRows(system.layout().size(), builder.build());
+  p.contacts = contacts;
+  return p;
 }
 
-JacobianPattern forceAndUserPattern(const MultibodySystem& system) {
-  PatternBuilder builder(system, true);
-  return patternFromRows(system.layout().size(), builder.build());
+JacobianPattern forceAndUserPattern(const MultibodySystem& system,
+                                    const std::vector<char>& contacts) {
+  PatternBuilder builder(system, contacts, true);
+  JacobianPattern p = patternFromRows(system.layout().size(), builder.build());
+  p.contacts = contacts;
+  return p;
 }
 
 void colourColumns(JacobianPattern& p) {
@@ -477,7 +488,9 @@ void makeRowsDense(JacobianPattern& p, const std::vector<int>& denseRows) {
     rows[r].resize(static_cast<size_t>(n));
     std::iota(rows[r].begin(), rows[r].end(), 0);
   }
+  std::vector<char> contacts = std::move(p.contacts);
   p = patternFromRows(n, std::move(rows));
+  p.contacts = std::move(contacts);
 }
 
 }  // namespace openmss::mechanics

@@ -37,6 +37,10 @@ struct JacobianPattern {
   // Distinct for every pattern made by patternFromRows (copies share it): what plans made on
   // a pattern (local_newton_matrix.hpp) check before they reuse their value indices.
   std::uint64_t stamp = 0;
+  // The CONTACT elements whose coupling the pattern holds, one flag per Model::contacts
+  // element; empty: all of them (docs/theory.md §6c, "Near-pair pattern"). An element left out
+  // must have exactly zero loads and partials wherever the matrix is evaluated on this pattern.
+  std::vector<char> contacts;
 
   int colours() const { return static_cast<int>(colourStart.size()) - 1; }
   int nonZeros() const { return static_cast<int>(rowIndex.size()); }
@@ -48,11 +52,15 @@ struct JacobianPattern {
 JacobianPattern patternFromRows(int size, std::vector<std::vector<int>> rows);
 
 // The structural pattern of the system's Newton matrix, coloured.
-JacobianPattern newtonMatrixPattern(const MultibodySystem& system);
+// With `contacts` (one flag per CONTACT element; empty: all), only the flagged CONTACT
+// elements couple their bodies.
+JacobianPattern newtonMatrixPattern(const MultibodySystem& system,
+                                    const std::vector<char>& contacts = {});
 // The part of it that the force elements and the user equations make (rows they write,
 // columns those rows read; other rows empty), coloured: what the element-local Newton matrix
 // still fills by compressed AD.
-JacobianPattern forceAndUserPattern(const MultibodySystem& system);
+JacobianPattern forceAndUserPattern(const MultibodySystem& system,
+                                    const std::vector<char>& contacts = {});
 
 // Greedy distance-2 colouring of the columns in ascending order (deterministic): two columns
 // that share a row get different colours.

@@ -213,7 +213,7 @@ void LocalNewtonMatrix::stabilisationChunk(const EquationPlan& plan, int slot, c
 }
 
 void LocalNewtonMatrix::planForceAndUser(const JacobianPattern& p) {
-  forceAndUser_ = forceAndUserPattern(system_);
+  forceAndUser_ = forceAndUserPattern(system_, p.contacts);
   if (forceAndUser_.denseRows > 0) {
     usable_ = false;
     return;

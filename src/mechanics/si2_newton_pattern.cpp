@@ -43,6 +43,7 @@ JacobianPattern stabilisedNewtonPattern(const MultibodySystem& system, const Jac
   }
   JacobianPattern p = patternFromRows(n + m, std::move(rows));
   p.denseRows = i3.denseRows;
+  p.contacts = i3.contacts;
   return p;
 }
 

@@ -13,9 +13,8 @@
 // per colour at the same values (local_newton_colours.cpp): it is recomputed only when the
 // position values of the bodies the contacts read differ from the last call's (an exact
 // comparison, so the cache can never give another answer than computing afresh).
-// The test itself runs over every solid pair of every element (brute force): on the 27-sphere
-// pile it lies within the 5 % of the samples of the contact loop it is inlined in
-// (docs/performance.md, "Contact pile"), so no sort-and-sweep is kept.
+// The test is a sort and sweep over the solids' bounding spheres (contact_sweep.hpp), the same
+// answer as testing every solid pair of every element (nearBruteForce) without the N² tests.
 
 #include <type_traits>
 #include <vector>
@@ -23,6 +22,7 @@
 #include "common/dual.hpp"
 #include "mechanics/contact/contact_kinematics.hpp"
 #include "mechanics/contact/contact_loads.hpp"
+#include "mechanics/contact/contact_sweep.hpp"
 
 namespace openmss::mechanics::contact {
 
@@ -30,7 +30,7 @@ class ContactBroadPhase {
  public:
   ContactBroadPhase() = default;
   ContactBroadPhase(const model::Model& m, const StateLayout& layout)
-      : m_(&m), layout_(layout), slots_(m, layout) {
+      : m_(&m), layout_(layout), slots_(m, layout), sweep_(m, slots_.marker) {
     slotBody_.assign(static_cast<size_t>(slots_.bodies), -1);
     for (int b = 0; b < layout.bodies; ++b)
       if (slots_.body[b] >= 0) slotBody_[slots_.body[b]] = b;
@@ -79,12 +79,35 @@ class ContactBroadPhase {
     if (same) return near_;
     for (int k = 0; k < slots_.markers; ++k)
       centres_[k] = markerOriginValue(*m_, layout_, slotMarker_[k], y);
-    near_.clear();
-    const auto& contacts = m_->contacts;
-    for (size_t e = 0; e < contacts.size(); ++e)
-      if (anyPairNear(contacts[e])) near_.push_back(static_cast<int>(e));
+    sweep_.near(centres_, 1.0, near_);
     valid_ = true;
     return near_;
+  }
+
+  // The elements (ascending) with a pair of solids whose bounding spheres, radii scaled by
+  // `factor` (>= 1), overlap at the positions of y: the near set of the Newton matrix's
+  // pattern with a margin (docs/theory.md §6c, "Near-pair pattern"). Leaves near()'s cache
+  // alone. With factor 1 it is near(y) to the bit (the same test on the same centres).
+  std::vector<int> nearWithin(const double* y, double factor) {
+    std::vector<V3<double>> centres(static_cast<size_t>(slots_.markers));
+    for (int k = 0; k < slots_.markers; ++k)
+      centres[k] = markerOriginValue(*m_, layout_, slotMarker_[k], y);
+    std::vector<int> out;
+    sweep_.near(centres, factor, out);
+    return out;
+  }
+
+  // The brute-force answer of nearWithin (every solid pair of every element): the reference
+  // of the sweep's tests.
+  std::vector<int> nearBruteForce(const double* y, double factor) const {
+    std::vector<V3<double>> centres(static_cast<size_t>(slots_.markers));
+    for (int k = 0; k < slots_.markers; ++k)
+      centres[k] = markerOriginValue(*m_, layout_, slotMarker_[k], y);
+    std::vector<int> out;
+    const auto& contacts = m_->contacts;
+    for (size_t e = 0; e < contacts.size(); ++e)
+      if (anyPairNear(contacts[e], centres, factor)) out.push_back(static_cast<int>(e));
+    return out;
   }
 
  private:
@@ -94,11 +117,12 @@ class ContactBroadPhase {
     key_[i] = v;
     return same;
   }
-  bool anyPairNear(const model::Contact& c) const {
+  bool anyPairNear(const model::Contact& c, const std::vector<V3<double>>& centres,
+                   double factor) const {
     for (const model::ContactSolid& si : c.iSolids)
       for (const model::ContactSolid& sj : c.jSolids)
-        if (boundingSpheresOverlap(centres_[slots_.marker[si.marker]], si.boundingRadius,
-                                   centres_[slots_.marker[sj.marker]], sj.boundingRadius))
+        if (boundingSpheresOverlap(centres[slots_.marker[si.marker]], factor * si.boundingRadius,
+                                   centres[slots_.marker[sj.marker]], factor * sj.boundingRadius))
           return true;
     return false;
   }
@@ -106,6 +130,7 @@ class ContactBroadPhase {
   const model::Model* m_ = nullptr;
   StateLayout layout_;
   ContactSlots slots_;
+  BoundingSweep sweep_;
   std::vector<int> slotBody_, slotMarker_;
   std::vector<V3<double>> centres_;  // per marker slot, at the positions of key_
   std::vector<double> key_;          // r and e of each slot body at the last call
