@@ -151,15 +151,31 @@ void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& fi
   request.gjk_tolerance = 1e-12;
   fcl::CollisionResultd result;
   fcl::collide(&oi, &oj, request, result);
+  const bool meshI = si.shape == Shape::Mesh, meshJ = sj.shape == Shape::Mesh;
   for (size_t k = 0; k < result.numContacts(); ++k) {
     const fcl::Contactd& c = result.getContact(k);
-    if (!(c.penetration_depth > 0.0)) continue;
-    // FCL's normal points from the first object (I) to the second (J) and its point lies
-    // midway between the witness points; I's witness is the one inside J (along +normal).
-    const Eigen::Vector3d half = 0.5 * c.penetration_depth * c.normal;
-    const Eigen::Vector3d onI = c.pos + half, onJ = c.pos - half;
-    out.push_back({V3<double>::from(onI), V3<double>::from(onJ), V3<double>::from(-c.normal),
-                   c.penetration_depth});
+    const double d = c.penetration_depth;
+    if (!(d > 0.0)) continue;
+    // FCL's conventions differ by pair kind (checked on boxes resting on boxes and meshes):
+    // convex-convex (GJK/MPR): normal from the first object (I) to the second (J), point
+    // midway between the witnesses; mesh-mesh: normal from I to J, point I's witness (inside
+    // J); mesh-convex, in either order: normal from the mesh to the convex solid, point the
+    // mesh's witness (inside the convex solid). `toJ` is the unit normal from I towards J.
+    Eigen::Vector3d toJ = c.normal, onI, onJ;
+    if (!meshI && !meshJ) {
+      onI = c.pos + 0.5 * d * toJ;
+      onJ = c.pos - 0.5 * d * toJ;
+    } else if (meshI && meshJ) {
+      onI = c.pos;
+      onJ = c.pos - d * toJ;
+    } else {
+      if (meshJ) toJ = -toJ;  // FCL's normal points from the mesh (J) to I
+      const Eigen::Vector3d meshPoint = c.pos, convexPoint = c.pos - d * c.normal;
+      onI = meshI ? meshPoint : convexPoint;
+      onJ = meshI ? convexPoint : meshPoint;
+    }
+    out.push_back(
+        {V3<double>::from(onI), V3<double>::from(onJ), V3<double>::from(Eigen::Vector3d(-toJ)), d});
   }
 }
 
