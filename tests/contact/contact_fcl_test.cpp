@@ -67,20 +67,20 @@ TEST(ContactFcl, EqualScaleEllipsoidThroughFclIsTheAnalyticSphere) {
   };
   const Eigen::Matrix3d tilt = turn(0.3, {1, 2, 0.5});
   // FCL 0.7 computes libccd penetration by MPR, which searches along the portal from the
-  // centres' direction: exact for two spheres and a sphere on a face (its point anywhere in
-  // the contact patch, radius sqrt(2 r d) = 0.03 here); at a box edge its depth is 0.4 % deep
-  // and its normal 0.1 rad off the minimal one; on a curved side a few 1e-7 and 1e-3 rad. The
-  // polytope frustum adds its chordal error 3.0e-4 R = 9.0e-5 (theory §6c, "FCL").
+  // centres' direction: exact for two spheres and a sphere on a face; at a box edge its depth
+  // is 0.4 % deep and its normal 0.1 rad off the minimal one; on a curved side 1e-12 and 2e-6
+  // rad. The point is the sphere's support point along that normal, as exact as the normal.
+  // The polytope frustum adds its chordal error 3.0e-4 R = 9.0e-5 (theory §6c, "FCL").
   const std::vector<Case> cases = {
       {"sphere", solid(Shape::Sphere, 0.15), tilt, {0.1, 0.12, 0.16}, 1e-12, 1e-12, 1e-12},
       {"box face", solid(Shape::Box, 0.4, 0.5, -0.3), tilt, tilt * Eigen::Vector3d(0.2, 0.3, 0.095),
-       1e-7, 1e-6, 0.03},
+       1e-9, 1e-9, 1e-9},
       {"box edge", solid(Shape::Box, 0.4, 0.5, 0.3), tilt, tilt * Eigen::Vector3d(0.45, 0.2, 0.35),
        0.005 * 0.0293, 0.15, 0.01},
       {"cylinder side", solid(Shape::Frustum, 0.2, 0.2, 0.5), tilt,
-       tilt * Eigen::Vector3d(0.28, 0.05, 0.2), 1e-6, 2e-3, 5e-3},
+       tilt * Eigen::Vector3d(0.28, 0.05, 0.2), 1e-9, 1e-5, 1e-6},
       {"steep frustum side", solid(Shape::Frustum, 0.3, 0.1, 0.4), tilt,
-       tilt * Eigen::Vector3d(0.02, 0.26, 0.2), 9.1e-5, 5e-3, 1e-2},
+       tilt * Eigen::Vector3d(0.02, 0.26, 0.2), 9.1e-5, 5e-3, 1e-3},
   };
   for (const Case& c : cases) {
     const SolidFrame<double> fs = frame(c.centre, Eigen::Matrix3d::Identity());

@@ -128,6 +128,32 @@ Placed placed(const model::ContactSolid& s) {
   return p;
 }
 
+// The point of a sphere or ellipsoid farthest along the ground direction u (its support point):
+// x = p + A diag(s^2) w / |diag(s) w|, w = A^T u. Smooth in the frame and u, unlike MPR's
+// point, which wanders within the contact patch (theory §6c, "Partials of the FCL pairs").
+Eigen::Vector3d supportPoint(const model::ContactSolid& s, const SolidFrame<double>& f,
+                             const Eigen::Vector3d& u) {
+  const Eigen::Matrix3d a = toEigen(f.a);
+  const Eigen::Vector3d semi =
+      s.shape == Shape::Sphere ? Eigen::Vector3d::Constant(s.size[0]) : Eigen::Vector3d(s.size);
+  const Eigen::Vector3d sw = semi.cwiseProduct(a.transpose() * u);
+  return toEigen(f.p) + a * (semi.cwiseProduct(sw) / sw.norm());
+}
+
+// The frame with unit axes. Away from |e| = 1 (a Newton iterate, a differenced state) the
+// quadratic form gives axes |e|^2 R(e/|e|); FCL takes its transform as a rotation (inverse =
+// transpose), so it gets R(e/|e|): the contact then depends on e through e/|e| only, and the
+// residual and its differences agree (theory §6c, "Partials of the FCL pairs").
+SolidFrame<double> unitFrame(const SolidFrame<double>& f) {
+  SolidFrame<double> u = f;
+  for (V3<double>& c : u.a.c) c = c * (1.0 / norm(c));
+  return u;
+}
+
+bool smooth(const model::ContactSolid& s) {
+  return s.shape == Shape::Sphere || s.shape == Shape::Ellipsoid;
+}
+
 fcl::Transform3d transformOf(const SolidFrame<double>& f, const Eigen::Vector3d& offset) {
   fcl::Transform3d t = fcl::Transform3d::Identity();
   t.linear() = toEigen(f.a);
@@ -137,9 +163,10 @@ fcl::Transform3d transformOf(const SolidFrame<double>& f, const Eigen::Vector3d&
 
 }  // namespace
 
-void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& fi,
-                     const model::ContactSolid& sj, const SolidFrame<double>& fj,
+void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& givenI,
+                     const model::ContactSolid& sj, const SolidFrame<double>& givenJ,
                      std::vector<LibraryContact>& out) {
+  const SolidFrame<double> fi = unitFrame(givenI), fj = unitFrame(givenJ);
   const Placed pi = placed(si), pj = placed(sj);
   if (!pi.geometry || !pj.geometry) return;
   const fcl::CollisionObjectd oi(pi.geometry, transformOf(fi, pi.offset));
@@ -163,8 +190,18 @@ void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& fi
     // mesh's witness (inside the convex solid). `toJ` is the unit normal from I towards J.
     Eigen::Vector3d toJ = c.normal, onI, onJ;
     if (!meshI && !meshJ) {
-      onI = c.pos + 0.5 * d * toJ;
-      onJ = c.pos - 0.5 * d * toJ;
+      // A smooth solid's witness is its support point along the normal; the other's lies d
+      // back along it. Otherwise FCL's midway point.
+      if (smooth(si)) {
+        onI = supportPoint(si, fi, toJ);
+        onJ = onI - d * toJ;
+      } else if (smooth(sj)) {
+        onJ = supportPoint(sj, fj, -toJ);
+        onI = onJ + d * toJ;
+      } else {
+        onI = c.pos + 0.5 * d * toJ;
+        onJ = c.pos - 0.5 * d * toJ;
+      }
     } else if (meshI && meshJ) {
       onI = c.pos;
       onJ = c.pos - d * toJ;
