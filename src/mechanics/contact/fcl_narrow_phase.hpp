@@ -2,15 +2,13 @@
 // The library narrow phase of CONTACT (docs/theory.md §6c, "FCL"): pairs that no analytic
 // routine covers (an ELLIPSOID with unequal scales against a sphere, box, frustum, ellipsoid
 // or mesh; two frustums with sides steeper than 5 degrees; a mesh against a solid other than a
-// PLANE) go to FCL's GJK/EPA (libccd) or its mesh traversal, on values.
+// PLANE) go to FCL's libccd penetration (MPR) or its mesh traversal, on values.
 //
-// FCL gives points, a normal and a depth, not partials. They come from the contact frame: each
-// solid's witness point (its point deepest inside the other) is held as a material point of its
-// solid and the normal is held fixed; the depth is then d = n . (xJ - xI) on T. For smooth
-// convex surfaces this is the first-order gap exactly (the witness points slide along surfaces
-// normal to n), so the depth's partials are exact; what is left out is the normal's turn and
-// the witness points' slide, terms of relative size depth / radius of curvature (theory §6c,
-// "Partials of the FCL pairs").
+// FCL gives points, a normal and a depth, not partials (theory §6c, "Partials of the FCL
+// pairs"): on duals of one direction a single contact gets central differences of FCL's result
+// along that direction; several contacts (meshes) and nested duals use the contact frame (each
+// witness point held as a material point of its solid, the normal fixed, d = n . (xJ - xI) on
+// T, the first-order gap of a minimal penetration).
 
 #include <vector>
 
