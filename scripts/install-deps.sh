@@ -9,6 +9,7 @@ packages=(
   libsuitesparse-dev     # KLU: sparse LU of large Newton matrices (solvers/klu_linear_solver); SPQR: rank of large constraint Jacobians (mechanics/sparse_constraint_jacobian)
   libsundials-dev        # IDA (DSTIFF) and CVODE's Adams method (ABAM) integrators
   libxml2-dev            # the results file (.res, XML): output/results_file*.cpp
+  libfcl-dev libccd-dev  # FCL (libccd GJK/MPR, meshes): CONTACT's library narrow phase (mechanics/contact/fcl_narrow_phase.cpp)
   libgtest-dev libgmock-dev  # unit and validation tests
   gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/*.f); the FORTRAN unit of SAVSUB/RELSUB (src/user/fortran_units)
   libbenchmark-dev       # micro-benchmarks in bench/

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "common/source_location.hpp"
+#include "model/triangle_mesh.hpp"
 #include "user/contact_interfaces.hpp"
 
 namespace openmss::model {
@@ -25,14 +26,23 @@ struct ContactSolid {
     // PLANE: the half-space below the RM marker's xy-plane (z < 0 in its axes), limited
     // sideways to XMIN..XMAX, YMIN..YMAX along its x and y axes when they are given.
     Plane,
+    // ELLIPSOID with unequal scales: semi-axes XSCALE/2, YSCALE/2, ZSCALE/2 along the CM
+    // marker's axes (narrow phase: FCL, or analytic against a PLANE; theory §6c, "FCL").
+    Ellipsoid,
+    // TORUS: centre circle of radius MAJOR_RADIUS in the CM marker's xy-plane, tube radius
+    // MINOR_RADIUS (analytic against a PLANE or a sphere only).
+    Torus,
+    // EXTERNAL shell (.shl or .stl) read into `mesh`, in the RM marker's axes.
+    Mesh,
   };
   Shape shape = Shape::Sphere;
   long graphicsId = 0;
   int marker = -1;  // the reference marker (CM or CORNER)
   int part = -1;
   // Sphere: radius in x. Box: the extents X, Y, Z. Frustum: bottom radius in x, top radius in
-  // y, LENGTH in z.
+  // y, LENGTH in z. Ellipsoid: the semi-axes. Torus: major radius in x, minor in y.
   Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  std::shared_ptr<const TriangleMesh> mesh;  // Mesh only
   // Plane: XMIN, XMAX, YMIN, YMAX (infinite when not given).
   Eigen::Vector4d bounds{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL};
   // Radius of a sphere about the reference marker's origin that holds the solid: the
@@ -43,7 +53,7 @@ struct ContactSolid {
 
 // Two frustums touch side against side through their sections perpendicular to the axes
 // (theory §6c, "Frustum against frustum"): a depth off by the factor 1/cos(half-angle) of the
-// sides' slope, at most 0.4 % up to this half-angle (5 degrees); steeper pairs are refused.
+// sides' slope, at most 0.4 % up to this half-angle (5 degrees); steeper pairs go to FCL.
 inline constexpr double kMaxFrustumPairHalfAngle = 5.0 * 3.14159265358979323846 / 180.0;
 
 // Half-angle of a frustum's side (0 for a cylinder), radians.

@@ -1,12 +1,17 @@
 #include "model/contact_builder.hpp"
 
+#include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <map>
+#include <memory>
+#include <optional>
 #include <utility>
 
 #include "model/contact_user_laws.hpp"
 #include "model/graphics_builder.hpp"
+#include "model/shell_file.hpp"
 #include "model/statement_arguments.hpp"
 
 namespace openmss::model {
@@ -77,6 +82,95 @@ bool readPlane(const Statement& g, const Model& model, const SourceLocation& whe
   return true;
 }
 
+// ELLIPSOID (CM, XSCALE, YSCALE, ZSCALE: the diameters): a sphere when the three are equal,
+// else an ellipsoid (theory §6c); false after a diagnostic at `where`.
+bool readEllipsoid(const Statement& g, const Model& model, const SourceLocation& where,
+                   const std::string& subject, Diagnostics& diags, ContactSolid& out) {
+  const double x = graphicsNumber(g, "XSCALE"), y = graphicsNumber(g, "YSCALE"),
+               z = graphicsNumber(g, "ZSCALE");
+  if (!(x > 0.0) || !(y > 0.0) || !(z > 0.0)) {
+    diags.error(where, subject,
+                graphicsAt(g) + " is an ELLIPSOID with scales " + std::to_string(x) + ", " +
+                    std::to_string(y) + ", " + std::to_string(z) + ": it has no volume",
+                "Give XSCALE, YSCALE and ZSCALE (the diameters) all positive.");
+    return false;
+  }
+  const bool sphere = x == y && x == z;
+  out.shape = sphere ? ContactSolid::Shape::Sphere : ContactSolid::Shape::Ellipsoid;
+  out.size =
+      sphere ? Eigen::Vector3d(0.5 * x, 0.0, 0.0) : Eigen::Vector3d(0.5 * x, 0.5 * y, 0.5 * z);
+  out.boundingRadius = 0.5 * std::max({x, y, z});
+  out.marker = graphicsMarker(g, "CM", model, where, subject, diags);
+  return true;
+}
+
+// TORUS (CM, MAJOR_RADIUS, MINOR_RADIUS): a ring about the CM marker's z axis; false after a
+// diagnostic at `where`.
+bool readTorus(const Statement& g, const Model& model, const SourceLocation& where,
+               const std::string& subject, Diagnostics& diags, ContactSolid& out) {
+  const double big = graphicsNumber(g, "MAJOR_RADIUS"), tube = graphicsNumber(g, "MINOR_RADIUS");
+  if (!(tube > 0.0) || !(big > tube)) {
+    diags.error(where, subject,
+                graphicsAt(g) + " is a TORUS with MAJOR_RADIUS = " + std::to_string(big) +
+                    " and MINOR_RADIUS = " + std::to_string(tube) + ": contact needs a ring",
+                "Give MAJOR_RADIUS > MINOR_RADIUS > 0.");
+    return false;
+  }
+  out.shape = ContactSolid::Shape::Torus;
+  out.size = Eigen::Vector3d(big, tube, 0.0);
+  out.boundingRadius = big + tube;
+  out.marker = graphicsMarker(g, "CM", model, where, subject, diags);
+  return true;
+}
+
+// EXTERNAL (RM, FILE): an ADAMS shell (.shl) or STL file next to the data set, read into a
+// triangle mesh (theory §6c, "Meshes"); Parasolid and other files are refused by name. False
+// after a diagnostic at `where`.
+bool readExternal(const Statement& g, const Model& model, const SourceLocation& where,
+                  const std::string& subject, Diagnostics& diags, ContactSolid& out) {
+  const Argument* f = g.find("FILE");
+  const std::string file = f && !f->values.empty() ? f->values[0].written : "";
+  const std::filesystem::path path =
+      std::filesystem::path(model.file).parent_path() / std::filesystem::path(file);
+  std::string ext = std::filesystem::path(file).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  if (file.empty() || !std::filesystem::exists(path)) {
+    diags.error(where, subject,
+                graphicsAt(g) + " reads its shell from the file '" + file +
+                    "', which is missing (" + path.string() + ")",
+                "Put the file next to the data set, or replace the EXTERNAL geometry by "
+                "ELLIPSOID, BOX, CYLINDER or FRUSTUM solids.");
+    return false;
+  }
+  if (ext != ".shl" && ext != ".stl") {
+    const bool parasolid = ext.rfind(".x_", 0) == 0 || ext.rfind(".xmt", 0) == 0;
+    diags.error(
+        where, subject,
+        graphicsAt(g) + " is an EXTERNAL shell (" + file + "): " +
+            (parasolid ? "Parasolid files are not read" : "'" + ext + "' files are not read") +
+            "; contact reads ADAMS shell (.shl) and STL (.stl) files",
+        "Export the body as .shl or .stl and name that file in FILE, or replace it by "
+        "ELLIPSOID, BOX, CYLINDER or FRUSTUM solids.");
+    return false;
+  }
+  std::string why;
+  std::optional<TriangleMesh> mesh = readShellFile(path.string(), why);
+  if (!mesh) {
+    diags.error(
+        where, subject,
+        graphicsAt(g) + " reads its shell from '" + file + "', which cannot be read: " + why,
+        "Give a shell file of the ADAMS .shl layout (points, then faces) or an STL file.");
+    return false;
+  }
+  double reach = 0.0;
+  for (const Eigen::Vector3d& v : mesh->vertices) reach = std::max(reach, v.norm());
+  out.shape = ContactSolid::Shape::Mesh;
+  out.mesh = std::make_shared<const TriangleMesh>(std::move(*mesh));
+  out.boundingRadius = reach;
+  out.marker = graphicsMarker(g, "RM", model, where, subject, diags);
+  return true;
+}
+
 // One GRAPHICS solid for a CONTACT; false after a diagnostic at `where` (the IGEOM/JGEOM value).
 bool readSolid(const Statement& g, const Model& model, const SourceLocation& where,
                const std::string& subject, Diagnostics& diags, ContactSolid& out) {
@@ -84,22 +178,7 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
   out.graphicsId = g.id.value_or(0);
   out.where = g.where;
   if (kind == "ELLIPSOID") {
-    const double x = graphicsNumber(g, "XSCALE"), y = graphicsNumber(g, "YSCALE"),
-                 z = graphicsNumber(g, "ZSCALE");
-    if (!(x > 0.0) || x != y || x != z) {
-      diags.error(where, subject,
-                  graphicsAt(g) + " is an ELLIPSOID with scales " + std::to_string(x) + ", " +
-                      std::to_string(y) + ", " + std::to_string(z) +
-                      ": only spheres (three equal positive scales) are supported as contact "
-                      "geometry so far",
-                  "Give XSCALE = YSCALE = ZSCALE (the diameter), or model the contact with "
-                  "spheres.");
-      return false;
-    }
-    out.shape = ContactSolid::Shape::Sphere;
-    out.size = Eigen::Vector3d(0.5 * x, 0.0, 0.0);
-    out.boundingRadius = 0.5 * x;
-    out.marker = graphicsMarker(g, "CM", model, where, subject, diags);
+    if (!readEllipsoid(g, model, where, subject, diags, out)) return false;
   } else if (kind == "BOX") {
     out.shape = ContactSolid::Shape::Box;
     out.size =
@@ -112,39 +191,20 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
     out.boundingRadius = out.size.norm();
     out.marker = graphicsMarker(g, "CORNER", model, where, subject, diags);
   } else if (kind == "EXTERNAL") {
-    const Argument* f = g.find("FILE");
-    const std::string file = f && !f->values.empty() ? f->values[0].written : "";
-    const std::filesystem::path path =
-        std::filesystem::path(model.file).parent_path() / std::filesystem::path(file);
-    if (file.empty() || !std::filesystem::exists(path)) {
-      diags.error(where, subject,
-                  graphicsAt(g) + " reads its shell from the file '" + file +
-                      "', which is missing (" + path.string() + ")",
-                  "Put the file next to the data set, or replace the EXTERNAL geometry by "
-                  "ELLIPSOID, BOX, CYLINDER or FRUSTUM solids.");
-    } else {
-      diags.error(where, subject,
-                  graphicsAt(g) + " is an EXTERNAL shell (" + file +
-                      "): shell and Parasolid files are not read yet",
-                  "Replace it by ELLIPSOID (sphere), BOX, CYLINDER or FRUSTUM solids.");
-    }
-    return false;
+    if (!readExternal(g, model, where, subject, diags, out)) return false;
   } else if (kind == "CYLINDER" || kind == "FRUSTUM") {
     if (!readFrustum(g, kind, model, where, subject, diags, out)) return false;
   } else if (kind == "PLANE") {
     if (!readPlane(g, model, where, subject, diags, out)) return false;
   } else if (kind == "TORUS") {
-    diags.error(where, subject,
-                graphicsAt(g) + " is a " + kind + ": contact with it is not supported yet",
-                "Use ELLIPSOID (sphere), BOX, CYLINDER, FRUSTUM or PLANE solids.");
-    return false;
+    if (!readTorus(g, model, where, subject, diags, out)) return false;
   } else {
     diags.error(where, subject,
                 graphicsAt(g) + " is " +
                     (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
                     ": CONTACT needs solids (a volume)",
-                "Name ELLIPSOID (sphere), BOX, CYLINDER, FRUSTUM or PLANE GRAPHICS in IGEOM and "
-                "JGEOM.");
+                "Name ELLIPSOID, BOX, CYLINDER, FRUSTUM, TORUS, PLANE or EXTERNAL (.shl, .stl) "
+                "GRAPHICS in IGEOM and JGEOM.");
     return false;
   }
   if (out.marker < 0) return false;
@@ -309,35 +369,32 @@ void rejectUnsupported(StatementArguments& a) {
 }
 
 // Every I solid against every J solid must be a pair the narrow phase covers (theory §6c):
-// two solids of revolution (CYLINDER, FRUSTUM) only with sides of half-angle up to
-// kMaxFrustumPairHalfAngle; one located message per pair.
+// not two PLANE solids, and a TORUS only against a PLANE or a sphere; one located message per
+// pair.
 bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
+  using S = ContactSolid::Shape;
   bool ok = true;
   for (const ContactSolid& a : c.iSolids)
     for (const ContactSolid& b : c.jSolids) {
-      if (a.shape == ContactSolid::Shape::Plane && b.shape == ContactSolid::Shape::Plane) {
+      const std::string pair = "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
+                               std::to_string(b.graphicsId);
+      if (a.shape == S::Plane && b.shape == S::Plane) {
         diags.error(s.where, s.subject(),
-                    "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
-                        std::to_string(b.graphicsId) +
-                        ": two PLANE solids (half-spaces) cannot be in contact",
+                    pair + ": two PLANE solids (half-spaces) cannot be in contact",
                     "Replace one of the planes by a BOX, ELLIPSOID, CYLINDER or FRUSTUM.");
         ok = false;
         continue;
       }
-      if (a.shape != ContactSolid::Shape::Frustum || b.shape != ContactSolid::Shape::Frustum)
-        continue;
-      const ContactSolid& steep = frustumHalfAngle(a) >= frustumHalfAngle(b) ? a : b;
-      const double angle = frustumHalfAngle(steep);
-      if (angle <= kMaxFrustumPairHalfAngle) continue;
+      const bool torusA = a.shape == S::Torus, torusB = b.shape == S::Torus;
+      if (!torusA && !torusB) continue;
+      const ContactSolid& other = torusA ? b : a;
+      if (other.shape == S::Plane || other.shape == S::Sphere) continue;
       diags.error(s.where, s.subject(),
-                  "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
-                      std::to_string(b.graphicsId) +
-                      ": contact between two CYLINDER/FRUSTUM solids needs sides within 5 "
-                      "degrees of their axes (GRAPHICS/" +
-                      std::to_string(steep.graphicsId) + " has " +
-                      std::to_string(angle * 180.0 / M_PI) + " degrees)",
-                  "Model the steep FRUSTUM as a CYLINDER, or one of the two as ELLIPSOID "
-                  "(sphere) or BOX solids.");
+                  pair +
+                      ": a TORUS is in contact with a PLANE or a sphere (ELLIPSOID of equal "
+                      "scales) only",
+                  "Model the other solid as a PLANE or a sphere, or the ring as an EXTERNAL "
+                  "shell (.shl, .stl).");
       ok = false;
     }
   return ok;

@@ -7,7 +7,8 @@
 // - a cylinder resting on another crossed at 90 degrees settles at k d^e = m g;
 // - elastic undamped collisions (crossed off-centre, so the hit spins the part; parallel) keep
 //   their kinetic energy to 1e-6;
-// - the exact partials against central differences; the builder refuses steep frustum pairs.
+// - the exact partials against central differences. Steep pairs go to FCL
+//   (contact_fcl_test.cpp).
 
 #include <gtest/gtest.h>
 
@@ -169,24 +170,6 @@ TEST(ContactFrustumPair, PartialsOfParallelAndCrossedPairsAreExact) {
   checkJacobian(
       deck(groundAlongX(0.1, 0.09), "QG=0.05,0.07,0.142, REULER=10D,90D,0", kFrictionLaw, false),
       v);
-}
-
-TEST(ContactFrustumPair, BuilderRefusesSteepFrustumPairs) {
-  const std::string text = deck(groundAlongX(0.3, 0.1), "QG=0,0,0.35", kLaw, false);
-  const testing::BuiltModel b = testing::buildModelFromText(text, "c.adm");
-  EXPECT_FALSE(b.ok);
-  int errors = 0;
-  for (const auto& d : b.diags.all()) {
-    if (d.severity != Severity::Error) continue;
-    ++errors;
-    EXPECT_EQ(d.where.line, 10) << format(d);
-    EXPECT_NE(format(d).find("GRAPHICS/2 against GRAPHICS/1: contact between two "
-                             "CYLINDER/FRUSTUM solids needs sides within 5 degrees of their "
-                             "axes (GRAPHICS/1 has 11.3"),
-              std::string::npos)
-        << format(d);
-  }
-  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
 }
 
 }  // namespace

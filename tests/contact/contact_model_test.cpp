@@ -29,7 +29,7 @@ const char* kHeader =
     "GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.2, ZSCALE=0.2\n"
     "GRAPHICS/3, CIRCLE, CM=20, RADIUS=0.1\n"
     "GRAPHICS/4, EXTERNAL, RM=20, FILE=missing_shell.xmt_txt, ELEMENT=SOLID1\n"
-    "GRAPHICS/5, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0.3, ZSCALE=0.2\n";
+    "GRAPHICS/5, ELLIPSOID, CM=20, XSCALE=0.2, YSCALE=0, ZSCALE=0.2\n";
 
 testing::BuiltModel deck(const std::string& contact) {
   return testing::buildModelFromText(std::string(kHeader) + contact + "END\n", "contact.adm");
@@ -89,13 +89,13 @@ TEST(ContactModel, RefusesANegativeStiffness) {
 }
 
 TEST(ContactModel, RefusesTheOtherUnsupportedInputs) {
-  // An unknown GRAPHICS, an ellipsoid that is not a sphere, one part on both sides, no law.
+  // An unknown GRAPHICS, an ellipsoid without volume, one part on both sides, no law.
   expectOneError(deck("CONTACT/1, IGEOM=9, JGEOM=1, POISSON, PENALTY=1e5, "
                       "RESTITUTION_COEFFICIENT=0.5\n"),
                  11, "GRAPHICS/9, which does not exist");
   expectOneError(deck("CONTACT/1, IGEOM=5, JGEOM=1, POISSON, PENALTY=1e5, "
                       "RESTITUTION_COEFFICIENT=0.5\n"),
-                 11, "only spheres");
+                 11, "is an ELLIPSOID with scales 0.200000, 0.000000, 0.200000: it has no volume");
   expectOneError(deck("CONTACT/1, IGEOM=2, JGEOM=2, POISSON, PENALTY=1e5, "
                       "RESTITUTION_COEFFICIENT=0.5\n"),
                  11, "same part");

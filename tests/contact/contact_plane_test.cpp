@@ -8,7 +8,8 @@
 //   a = g (sin phi - mu_d cos phi);
 // - the exact partials of sphere, box and cylinder against a tilted plane vs central
 //   differences;
-// - bad input: two planes, a partial rectangle, a TORUS: one located message each.
+// - bad input: two planes, a partial rectangle, a TORUS that is no ring: one located message
+//   each.
 
 #include <gtest/gtest.h>
 
@@ -217,13 +218,14 @@ TEST(ContactPlane, BadPlanesAndTheTorusAreLocated) {
       "PART/2, MASS=1, CM=20, IP=1,1,1\nMARKER/20, PART=2\n"
       "GRAPHICS/2, PLANE, RM=20\n"
       "GRAPHICS/3, PLANE, RM=20, XMIN=-1, XMAX=1\n"
-      "GRAPHICS/4, TORUS, CM=20, MAJOR_RADIUS=1, MINOR_RADIUS=0.1\n";
+      "GRAPHICS/4, TORUS, CM=20, MAJOR_RADIUS=0.1, MINOR_RADIUS=0.1\n";
   const std::string law = ", IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-3, EXPONENT=2\nEND\n";
   expectOneError(head + "CONTACT/1, IGEOM=2, JGEOM=1" + law, 10, "two PLANE solids");
   expectOneError(head + "CONTACT/1, IGEOM=3, JGEOM=1" + law, 10,
                  "GRAPHICS/3 (line 8) is a PLANE with 2 of XMIN, XMAX, YMIN, YMAX given");
   expectOneError(head + "CONTACT/1, IGEOM=4, JGEOM=1" + law, 10,
-                 "GRAPHICS/4 (line 9) is a TORUS: contact with it is not supported yet");
+                 "GRAPHICS/4 (line 9) is a TORUS with MAJOR_RADIUS = 0.100000 and MINOR_RADIUS = "
+                 "0.100000: contact needs a ring");
 }
 
 }  // namespace

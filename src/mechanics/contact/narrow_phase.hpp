@@ -5,12 +5,14 @@
 // Analytic pairs: sphere-sphere, sphere-box (a box floor is the plane), box-box (the vertices
 // of each box inside the other: exact for face-on-face and vertex-on-face contact); the pairs
 // with a frustum (CYLINDER, FRUSTUM) are in frustum_narrow_phase.hpp, two frustums in
-// frustum_pair_narrow_phase.hpp, a PLANE's in plane_narrow_phase.hpp.
+// frustum_pair_narrow_phase.hpp, a PLANE's in plane_narrow_phase.hpp; ellipsoids, tori, meshes
+// and steep frustum pairs in curved_narrow_phase.hpp (analytic or FCL).
 
 #include <algorithm>
 #include <vector>
 
 #include "mechanics/contact/contact_point.hpp"
+#include "mechanics/contact/curved_narrow_phase.hpp"
 #include "mechanics/contact/frustum_narrow_phase.hpp"
 #include "mechanics/contact/frustum_pair_narrow_phase.hpp"
 #include "mechanics/contact/plane_narrow_phase.hpp"
@@ -113,6 +115,10 @@ bool narrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
                  const model::ContactSolid& sj, const SolidFrame<T>& fj,
                  std::vector<ContactPoint<T>>& out) {
   using S = model::ContactSolid::Shape;
+  if (curvedPair(si, sj)) {
+    curvedNarrowPhase(si, fi, sj, fj, out);
+    return true;
+  }
   if (si.shape == S::Plane || sj.shape == S::Plane) return planeNarrowPhase(si, fi, sj, fj, out);
   if (si.shape == S::Sphere && sj.shape == S::Sphere) {
     sphereSphere(si, fi, sj, fj, out);
