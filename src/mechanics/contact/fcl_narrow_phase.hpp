@@ -41,13 +41,26 @@ void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& fi
                      const model::ContactSolid& sj, const SolidFrame<double>& fj,
                      std::vector<LibraryContact>& out);
 
+// The frame with its axes divided by their lengths, on T. FCL is given unit axes (away from
+// |e| = 1 the Euler parameters' axes have length |e|^2), so the witness points are placed with
+// unit axes too: the residual then does not change along |e|, as FCL's result does not, and its
+// partials agree with central differences in the Euler-parameter columns (theory §6c,
+// "Partials of the FCL pairs").
+template <class T>
+SolidFrame<T> unitAxes(const SolidFrame<T>& f) {
+  SolidFrame<T> u = f;
+  for (int k = 0; k < 3; ++k) u.a.c[k] = f.a.c[k] * (T(1.0) / norm(f.a.c[k]));
+  return u;
+}
+
 // The FCL contacts as contact points on T from the contact frame (above). Several contacts of
 // one pair (a mesh's triangles) share one force in proportion to their depths, as the rim
 // samples do (theory §6c, "Rim samples").
 template <class T>
-void contactFramePoints(const model::ContactSolid& si, const SolidFrame<T>& fi,
-                        const model::ContactSolid& sj, const SolidFrame<T>& fj,
+void contactFramePoints(const model::ContactSolid& si, const SolidFrame<T>& givenI,
+                        const model::ContactSolid& sj, const SolidFrame<T>& givenJ,
                         std::vector<ContactPoint<T>>& out) {
+  const SolidFrame<T> fi = unitAxes(givenI), fj = unitAxes(givenJ);
   const SolidFrame<double> vi = valueFrame(fi), vj = valueFrame(fj);
   std::vector<LibraryContact> found;
   libraryContacts(si, vi, sj, vj, found);
