@@ -243,20 +243,8 @@ double jacobianMismatch(const model::Model& m, const Eigen::VectorXd& velocity) 
   const Eigen::VectorXd yp = Eigen::VectorXd::Zero(y.size());
   Eigen::MatrixXd exact;
   s.newtonMatrix(0.0, y, yp, 0.0, exact);
-  const int n = static_cast<int>(y.size());
-  Eigen::VectorXd gp(n), gm(n);
-  double worst = 0.0, scale = 0.0;
-  for (int c = 0; c < n; ++c) {
-    const double h = 1e-6;
-    Eigen::VectorXd a = y, b = y;
-    a(c) += h;
-    b(c) -= h;
-    s.residual(0.0, a.data(), yp.data(), gp.data());
-    s.residual(0.0, b.data(), yp.data(), gm.data());
-    worst = std::max(worst, ((gp - gm) / (2 * h) - exact.col(c)).cwiseAbs().maxCoeff());
-    scale = std::max(scale, exact.col(c).cwiseAbs().maxCoeff());
-  }
-  return worst / scale;
+  const ColumnMismatch d = centralDifferenceMismatch(s, y, yp, exact, 1e-6);
+  return d.worst / d.scale;
 }
 
 TEST(ContactFcl, NewtonMatrixAgainstCentralDifferences) {

@@ -58,30 +58,15 @@ std::string pileDeck() {
 // dG/dy (cj = 0, dense) against central differences of the residual, every column.
 void expectCentralDifferences(const mechanics::MultibodySystem& s, const Eigen::VectorXd& y,
                               const Eigen::VectorXd& yp, const Eigen::MatrixXd& e) {
-  const int n = static_cast<int>(y.size());
-  Eigen::VectorXd gp(n), gm(n);
-  double worst = 0.0, scale = 0.0;
-  int columns = 0;
-  for (int c = 0; c < n; ++c) {
-    const double h = 1e-7;
-    Eigen::VectorXd a = y, b = y;
-    a(c) += h;
-    b(c) -= h;
-    s.residual(0.0, a.data(), yp.data(), gp.data());
-    s.residual(0.0, b.data(), yp.data(), gm.data());
-    const Eigen::VectorXd fd = (gp - gm) / (2 * h);
-    worst = std::max(worst, (fd - e.col(c)).cwiseAbs().maxCoeff());
-    scale = std::max(scale, e.col(c).cwiseAbs().maxCoeff());
-    ++columns;
-  }
+  const ColumnMismatch d = centralDifferenceMismatch(s, y, yp, e, 1e-7);
   std::printf(
       "contact pile: max |sparse - central difference| %.3e of max entry %.3e over %d "
       "columns\n",
-      worst, scale, columns);
-  EXPECT_EQ(columns, n);
+      d.worst, d.scale, d.columns);
+  EXPECT_EQ(d.columns, static_cast<int>(y.size()));
   // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches (as
   // contact_model_test.cpp's single contacts).
-  EXPECT_LT(worst, 1e-6 * scale);
+  EXPECT_LT(d.worst, 1e-6 * d.scale);
 }
 
 TEST(ContactPile, NewtonMatrixMatchesDenseAndCentralDifferences) {

@@ -137,6 +137,32 @@ inline double returnTime(const std::vector<double>& t, const std::vector<double>
 }
 
 // dG/dy of the residual: the Newton matrix with cj = 0 against central differences.
+// The Newton matrix `exact` (cj = 0) against central differences of the residual with step h,
+// every column: the largest difference and the largest entry.
+struct ColumnMismatch {
+  double worst = 0.0, scale = 0.0;
+  int columns = 0;
+};
+inline ColumnMismatch centralDifferenceMismatch(const mechanics::MultibodySystem& s,
+                                                const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                                const Eigen::MatrixXd& exact, double h) {
+  const int n = static_cast<int>(y.size());
+  Eigen::VectorXd gp(n), gm(n);
+  ColumnMismatch m;
+  for (int c = 0; c < n; ++c) {
+    Eigen::VectorXd a = y, b = y;
+    a(c) += h;
+    b(c) -= h;
+    s.residual(0.0, a.data(), yp.data(), gp.data());
+    s.residual(0.0, b.data(), yp.data(), gm.data());
+    const Eigen::VectorXd fd = (gp - gm) / (2 * h);
+    m.worst = std::max(m.worst, (fd - exact.col(c)).cwiseAbs().maxCoeff());
+    m.scale = std::max(m.scale, exact.col(c).cwiseAbs().maxCoeff());
+    ++m.columns;
+  }
+  return m;
+}
+
 inline void checkJacobian(const std::string& text, const Eigen::VectorXd& velocity) {
   const model::Model m = build(text);
   mechanics::MultibodySystem s(m);
@@ -150,29 +176,14 @@ inline void checkJacobian(const std::string& text, const Eigen::VectorXd& veloci
   const Eigen::VectorXd yp = Eigen::VectorXd::Zero(y.size());
   Eigen::MatrixXd exact;
   s.newtonMatrix(0.0, y, yp, 0.0, exact);
-  const int n = static_cast<int>(y.size());
-  Eigen::VectorXd gp(n), gm(n);
-  double worst = 0.0, scale = 0.0;
-  int columns = 0;
-  for (int c = 0; c < n; ++c) {
-    const double h = 1e-7;
-    Eigen::VectorXd a = y, b = y;
-    a(c) += h;
-    b(c) -= h;
-    s.residual(0.0, a.data(), yp.data(), gp.data());
-    s.residual(0.0, b.data(), yp.data(), gm.data());
-    const Eigen::VectorXd fd = (gp - gm) / (2 * h);
-    worst = std::max(worst, (fd - exact.col(c)).cwiseAbs().maxCoeff());
-    scale = std::max(scale, exact.col(c).cwiseAbs().maxCoeff());
-    ++columns;
-  }
+  const ColumnMismatch d = centralDifferenceMismatch(s, y, yp, exact, 1e-7);
   std::printf(
       "contact Jacobian: max |exact - central difference| %.3e of max entry %.3e over "
       "%d columns\n",
-      worst, scale, columns);
-  EXPECT_EQ(columns, n);
+      d.worst, d.scale, d.columns);
+  EXPECT_EQ(d.columns, static_cast<int>(y.size()));
   // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches.
-  EXPECT_LT(worst, 1e-6 * scale);
+  EXPECT_LT(d.worst, 1e-6 * d.scale);
 }
 
 }  // namespace openmss::contact_test
