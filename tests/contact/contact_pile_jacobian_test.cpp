@@ -6,10 +6,12 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include "contact/contact_support.hpp"
 #include "mechanics/contact/contact_broad_phase.hpp"
@@ -22,14 +24,15 @@ namespace {
 // Four spheres (radius 0.05) on the floor 0.099 apart (1e-3 into the floor and into their
 // neighbours; the fourth 5e-4 into the floor), a fifth resting on the four, and a sixth far
 // above (its contacts are apart: the broad phase leaves them out).
-std::string pileDeck() {
-  const double z5 = 0.049 + 0.0700;
-  const double centres[6][3] = {{0, 0, 0.049},          {0.099, 0, 0.049},    {0, 0.099, 0.049},
-                                {0.099, 0.099, 0.0495}, {0.0495, 0.0495, z5}, {1, 1, 1}};
-  std::string d =
-      "pile jacobian\nPART/1, GROUND\nMARKER/10, PART=1, QP=-1,-1,-1\n"
-      "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n";
-  for (int i = 0; i < 6; ++i) {
+// Spheres (diameter 0.1, 0.1 kg) at `centres` above a ground BOX, a CONTACT with `law` between
+// each sphere and the floor and between every two spheres.
+std::string sphereDeck(const std::string& title, const std::vector<std::array<double, 3>>& centres,
+                       const std::string& law) {
+  std::string d = title +
+                  "\nPART/1, GROUND\nMARKER/10, PART=1, QP=-1,-1,-1\n"
+                  "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n";
+  const int n = static_cast<int>(centres.size());
+  for (int i = 0; i < n; ++i) {
     const int p = 2 + i;
     char line[256];
     std::snprintf(line, sizeof line,
@@ -40,19 +43,29 @@ std::string pileDeck() {
                   10 * p);
     d += line;
   }
-  const std::string law =
-      "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=2e-3, EXPONENT=1.5, COULOMB_FRICTION=ON, "
-      "MU_STATIC=0.5, MU_DYNAMIC=0.3, STICTION_TRANSITION_VELOCITY=0.1, "
-      "FRICTION_TRANSITION_VELOCITY=1\n";
   int id = 1;
-  for (int i = 0; i < 6; ++i)
+  for (int i = 0; i < n; ++i)
     d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (2 + i)) +
          ", JGEOM=1, " + law;
-  for (int i = 0; i < 6; ++i)
-    for (int j = i + 1; j < 6; ++j)
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 1; j < n; ++j)
       d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (2 + i)) +
            ", JGEOM=" + std::to_string(10 * (2 + j)) + ", " + law;
   return d + "ACCGRAV/KGRAV=-9.81\nEND\n";
+}
+
+std::string pileDeck() {
+  const double z5 = 0.049 + 0.0700;
+  return sphereDeck("pile jacobian",
+                    {{0, 0, 0.049},
+                     {0.099, 0, 0.049},
+                     {0, 0.099, 0.049},
+                     {0.099, 0.099, 0.0495},
+                     {0.0495, 0.0495, z5},
+                     {1, 1, 1}},
+                    "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=2e-3, EXPONENT=1.5, "
+                    "COULOMB_FRICTION=ON, MU_STATIC=0.5, MU_DYNAMIC=0.3, "
+                    "STICTION_TRANSITION_VELOCITY=0.1, FRICTION_TRANSITION_VELOCITY=1\n");
 }
 
 // dG/dy (cj = 0, dense) against central differences of the residual, every column.
@@ -179,33 +192,16 @@ TEST(ContactPile, NearPairPatternLeavesFarPairsOutAndMatchesTheFullPattern) {
 // onto them (frictionless: they push the four apart) and one dropped far away: the near set
 // changes as they fall.
 std::string dropDeck() {
-  const double centres[8][3] = {{0, 0, 0.0495},       {0.13, 0, 0.0495},    {0, 0.13, 0.0495},
-                                {0.13, 0.13, 0.0495}, {0.065, 0.066, 0.20}, {0.064, -0.001, 0.30},
-                                {0.001, 0.064, 0.36}, {0.6, 0.6, 0.25}};
-  std::string d =
-      "pile drop\nPART/1, GROUND\nMARKER/10, PART=1, QP=-1,-1,-1\n"
-      "GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1\n";
-  for (int i = 0; i < 8; ++i) {
-    const int p = 2 + i;
-    char line[256];
-    std::snprintf(line, sizeof line,
-                  "PART/%d, MASS=0.1, CM=%d, IP=1e-4,1e-4,1e-4, QG=%.6f,%.6f,%.6f\n"
-                  "MARKER/%d, PART=%d\n"
-                  "GRAPHICS/%d, ELLIPSOID, CM=%d, XSCALE=0.1, YSCALE=0.1, ZSCALE=0.1\n",
-                  p, 10 * p, centres[i][0], centres[i][1], centres[i][2], 10 * p, p, 10 * p,
-                  10 * p);
-    d += line;
-  }
-  const std::string law = "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-4, EXPONENT=1.5\n";
-  int id = 1;
-  for (int i = 0; i < 8; ++i)
-    d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (2 + i)) +
-         ", JGEOM=1, " + law;
-  for (int i = 0; i < 8; ++i)
-    for (int j = i + 1; j < 8; ++j)
-      d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (2 + i)) +
-           ", JGEOM=" + std::to_string(10 * (2 + j)) + ", " + law;
-  return d + "ACCGRAV/KGRAV=-9.81\nEND\n";
+  return sphereDeck("pile drop",
+                    {{0, 0, 0.0495},
+                     {0.13, 0, 0.0495},
+                     {0, 0.13, 0.0495},
+                     {0.13, 0.13, 0.0495},
+                     {0.065, 0.066, 0.20},
+                     {0.064, -0.001, 0.30},
+                     {0.001, 0.064, 0.36},
+                     {0.6, 0.6, 0.25}},
+                    "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-4, EXPONENT=1.5\n");
 }
 
 struct DropRun {
