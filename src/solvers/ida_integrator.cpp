@@ -336,8 +336,13 @@ bool IdaIntegrator::step(double tout) {
   yp_ = Engine::view(e.yp);
   readStatistics();
   if (observingSteps()) {
+    // DEBUG/EPRINT: IDA takes its rejected attempts inside IDASolve (counted in the
+    // statistics), so each accepted step is reported as its attempt (order, start, step size)
+    // and its acceptance; without the attempt line the order, time and step of DSTIFF were
+    // missing from the .msg (docs/validation.md, "IFToMM A02", DSTIFF at N = 40).
     IDAGetErrWeights(e.ida, e.weights);
     IDAGetEstLocalErrors(e.ida, e.localErrors);
+    notifyStep({StepInfo::Event::Attempt, stats_.steps, stats_.order, tPrevious_, hLast, 0.0});
     notifyStep({StepInfo::Event::Accepted, stats_.steps, stats_.order, tPrevious_, hLast,
                 N_VWrmsNorm(e.localErrors, e.weights)});
   }

@@ -64,6 +64,22 @@ TEST(Eprint, StatementWritesStepsAndNamedIterationsToTheMessageFile) {
   EXPECT_EQ(slurp(dir / "cli.log").find("EPRINT"), std::string::npos);
 }
 
+// DSTIFF (SUNDIALS IDA) reports each accepted step with its order, start and step size as well
+// (IDA's rejected attempts stay inside IDASolve): the EPRINT that located DSTIFF's stop at the
+// first flat passage of IFToMM A02 (docs/validation.md).
+TEST(Eprint, DstiffWritesEveryAcceptedStepWithItsOrderTimeAndStepSize) {
+  const fs::path dir = scratch("dstiff");
+  write(dir / "p.adm", pendulum("DEBUG/ EPRINT\n"));
+  write(dir / "p.acf",
+        "p.adm\np\nINTEGRATOR/DSTIFF, ERROR=1e-6\nSIMULATE/DYNAMICS, END=0.05, STEPS=5\nSTOP\n");
+  ASSERT_EQ(run("run p.acf", dir), 0) << slurp(dir / "cli.log");
+  const std::string msg = slurp(dir / "p.msg");
+  const int steps = count(msg, kStep);
+  EXPECT_GE(steps, 5);
+  EXPECT_EQ(count(msg, std::regex("   step \\d+ accepted: local error")), steps);
+  EXPECT_NE(msg.find(" EPRINT step 1: order 1, time 0.000000000E+00"), std::string::npos);
+}
+
 TEST(Eprint, CommandSwitchesItOnAndTheDefaultWritesNone) {
   const fs::path dir = scratch("command");
   write(dir / "p.adm", pendulum(""));
