@@ -96,8 +96,9 @@ bool ContactEventIntegrator::step(double tout) {
   // its start the multistep method interpolates) lies before an onset and its end after it.
   // A step from a (re)start has no such history (order 1 from one consistent state, under the
   // error test like any one-step method): it is cut back to its *last* onset instead, so that
-  // the onsets of one cluster (a layer of a pile landing within 1e-7 s) cost one restart, not
-  // one each (docs/theory.md §6c, "Events"; docs/performance.md, "Contact pile").
+  // the onsets of one cluster (a layer of a pile landing within 1e-7 s) cost two restarts (at
+  // the first, then from there at the last), not one each (docs/theory.md §6c, "Events";
+  // docs/performance.md, "Contact pile").
   double restartAt = b;
   if (restartAtOnset_)
     for (const ContactEvent& e : found)
