@@ -45,20 +45,20 @@ def angles(phase):
     return hip, knee, f"-({hip})-({knee})"
 
 
-def dataset(end_requests=True):
+def dataset():
     out = ["walking foot", "UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND",
            "PART/1, GROUND",
            "MARKER/10, PART=1, QP=-2,-1,-0.1",
            "GRAPHICS/10, BOX, CORNER=10, X=10, Y=2, Z=0.1",
            f"MARKER/11, PART=1, QP=0,0,{H}, REULER=90D,90D,0",
            # carriage: slides along ground x
-           f"PART/2, MASS=1, CM=20, IP=0.01,0.01,0.01",
+           "PART/2, MASS=1, CM=20, IP=0.01,0.01,0.01",
            f"MARKER/20, PART=2, QP=0,0,{H}",
            f"MARKER/21, PART=2, QP=0,0,{H}, REULER=90D,90D,0",
            f"MARKER/22, PART=2, QP=0,0,{H}",
            "JOINT/1, TRANSLATIONAL, I=21, J=11",
            # pelvis: slides along z on the carriage
-           f"PART/3, MASS=20, CM=30, IP=0.3,0.3,0.3",
+           "PART/3, MASS=20, CM=30, IP=0.3,0.3,0.3",
            f"MARKER/30, PART=3, QP=0,0,{H}",
            f"MARKER/31, PART=3, QP=0,0,{H}",
            "JOINT/2, TRANSLATIONAL, I=31, J=22"]
