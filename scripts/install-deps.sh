@@ -13,7 +13,7 @@ packages=(
   libgtest-dev libgmock-dev  # unit and validation tests
   gfortran               # FORTRAN-77 user subroutines of the tests (tests/user/*.f); the FORTRAN unit of SAVSUB/RELSUB (src/user/fortran_units)
   libbenchmark-dev       # micro-benchmarks in bench/
-  libmujoco-dev          # the MuJoCo peer of bench/contact_pile.py (bench/peers/mujoco_pile.cpp)
+  libmujoco-dev          # the MuJoCo peers of bench/contact_pile.py and bench/walking_foot.py (bench/peers/)
   clang-14 libclang-rt-14-dev  # libFuzzer and sanitizer runtimes for scripts/fuzz.sh
   # The Python package openmss (python/, docs/python.md), run by Debian's /usr/bin/python3,
   # and its tests; pybind11-dev and python3-dev for its in-process extension (openmss._native).

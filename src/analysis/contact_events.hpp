@@ -60,6 +60,7 @@ class ContactEventIntegrator final : public solvers::Integrator {
   // contacts read: touching() computes each state once per call.
   mechanics::contact::ContactBroadPhase broad_;
   std::vector<bool> state_;  // at inner_.t()
+  bool fromStart_ = true;    // the next step is the first from a (re)start
   std::vector<ContactEvent> events_;
 };
 

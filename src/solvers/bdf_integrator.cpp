@@ -135,8 +135,8 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   h_ = settings_.hinit > 0 ? settings_.hinit : 1e-3;
   h_ = std::min(h_, settings_.hmax);
   for (auto* v : {&yNew_, &ypNew_, &yPred_, &base_, &g_, &dy_, &predictorDiff_, &errorWeight_,
-                  &correctorWeight_, &errorMask_, &differentialMask_, &velocityMask_, &positionMask_,
-                  &roundOffFloor_, &velocityTestMask_, &velocityWeight_})
+                  &correctorWeight_, &errorMask_, &differentialMask_, &velocityMask_,
+                  &positionMask_, &roundOffFloor_, &velocityTestMask_, &velocityWeight_})
     v->resize(n);
   rowExponent_.resize(n);
   unknownExponent_.resize(n);
@@ -156,7 +156,11 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   sparse_ = problem_.sparse() && n >= kSparseThreshold;
   if (sparse_) {
     sparseJac_ = *problem_.pattern();
-    klu_.analyze(sparseJac_);
+    // No analysis here: the first factor() analyses the pattern it is given, and a restart
+    // (SENSOR/RESTART, a CONTACT onset) on an unchanged pattern keeps the analysis and the
+    // factors, so its first matrix is a refactorisation on the last pivots (guarded by the
+    // condition estimate) instead of a full factorisation (a pile restarts at nearly every
+    // step: 7-12 % of its CPU at N = 64 and 100, docs/performance.md, "Contact pile").
     solver_ = &klu_;
   } else {
     solver_ = &dense_;
