@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "common/bspline_curve.hpp"
 #include "common/source_location.hpp"
 #include "model/triangle_mesh.hpp"
 #include "user/contact_interfaces.hpp"
@@ -24,7 +25,9 @@ struct ContactSolid {
     // LENGTH along its z axis (negative: along -z); a cylinder is a frustum with equal radii.
     Frustum,
     // PLANE: the half-space below the RM marker's xy-plane (z < 0 in its axes), limited
-    // sideways to XMIN..XMAX, YMIN..YMAX along its x and y axes when they are given.
+    // sideways to XMIN..XMAX, YMIN..YMAX along its x and y axes when they are given. A closed
+    // planar OUTLINE is a plane too: through its first marker's origin, its normal by the
+    // polygon's winding (planeAxes), limited sideways to the polygon.
     Plane,
     // ELLIPSOID with unequal scales: semi-axes XSCALE/2, YSCALE/2, ZSCALE/2 along the CM
     // marker's axes (narrow phase: FCL, or analytic against a PLANE; theory §6c, "FCL").
@@ -34,6 +37,15 @@ struct ContactSolid {
     Torus,
     // EXTERNAL shell (.shl or .stl) read into `mesh`, in the RM marker's axes.
     Mesh,
+    // 2-D geometry of planar contact (theory §6c, "2-D contact"), in the marker's xy-plane:
+    // CIRCLE or ARC about the CM marker's z axis (radius in size[0], swept angle from its x
+    // axis in size[1]: 2 pi for a CIRCLE), a disc, or a hole when `flipped`;
+    Circle,
+    // POINT: the RM marker's origin;
+    Point,
+    // CURVE: the CURVE statement `curve` in the CRM marker's xy-plane, its material on the
+    // left of the direction of increasing parameter (on the right when `flipped`).
+    Curve,
   };
   Shape shape = Shape::Sphere;
   long graphicsId = 0;
@@ -45,6 +57,15 @@ struct ContactSolid {
   std::shared_ptr<const TriangleMesh> mesh;  // Mesh only
   // Plane: XMIN, XMAX, YMIN, YMAX (infinite when not given).
   Eigen::Vector4d bounds{-HUGE_VAL, HUGE_VAL, -HUGE_VAL, HUGE_VAL};
+  // Plane from an OUTLINE (theory §6c, "OUTLINE floors"): the plane's axes in the reference
+  // marker's axes (columns; z the normal) and the polygon's corners in them (x, y). An empty
+  // polygon is a PLANE statement's: the marker's own axes and the rectangle above.
+  Eigen::Matrix3d planeAxes = Eigen::Matrix3d::Identity();
+  std::vector<Eigen::Vector2d> polygon;
+  // 2-D geometry: the material side reversed (IFLIP_GEOMETRY / JFLIP_GEOMETRY name it).
+  bool flipped = false;
+  std::shared_ptr<const BSplineCurve> curve;  // Curve only
+  int curveSamples = 64;                      // Curve: coarse samples of its nearest-point search
   // Radius of a sphere about the reference marker's origin that holds the solid: the
   // bounding test that skips far pairs before the narrow phase (theory §6c, "Broad phase").
   double boundingRadius = 0.0;
@@ -55,6 +76,12 @@ struct ContactSolid {
 // (theory §6c, "Frustum against frustum"): a depth off by the factor 1/cos(half-angle) of the
 // sides' slope, at most 0.4 % up to this half-angle (5 degrees); steeper pairs go to FCL.
 inline constexpr double kMaxFrustumPairHalfAngle = 5.0 * 3.14159265358979323846 / 180.0;
+
+// Whether the shape is a 2-D geometry of planar contact (CIRCLE, ARC, POINT, CURVE).
+inline bool planarShape(ContactSolid::Shape s) {
+  return s == ContactSolid::Shape::Circle || s == ContactSolid::Shape::Point ||
+         s == ContactSolid::Shape::Curve;
+}
 
 // Half-angle of a frustum's side (0 for a cylinder), radians.
 inline double frustumHalfAngle(const ContactSolid& s) {

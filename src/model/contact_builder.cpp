@@ -9,6 +9,7 @@
 #include <optional>
 #include <utility>
 
+#include "model/contact_planar_geometry.hpp"
 #include "model/contact_user_laws.hpp"
 #include "model/graphics_builder.hpp"
 #include "model/shell_file.hpp"
@@ -198,13 +199,18 @@ bool readSolid(const Statement& g, const Model& model, const SourceLocation& whe
     if (!readPlane(g, model, where, subject, diags, out)) return false;
   } else if (kind == "TORUS") {
     if (!readTorus(g, model, where, subject, diags, out)) return false;
+  } else if (kind == "OUTLINE") {
+    if (!readOutlineFloor(g, model, where, subject, diags, out)) return false;
+  } else if (kind == "CIRCLE" || kind == "ARC" || kind == "POINT" || kind == "CURVE") {
+    if (!readPlanarGeometry(g, kind, model, where, subject, diags, out)) return false;
   } else {
     diags.error(where, subject,
                 graphicsAt(g) + " is " +
                     (kind.empty() ? "no solid" : "a " + kind + ", not a solid") +
                     ": CONTACT needs solids (a volume)",
-                "Name ELLIPSOID, BOX, CYLINDER, FRUSTUM, TORUS, PLANE or EXTERNAL (.shl, .stl) "
-                "GRAPHICS in IGEOM and JGEOM.");
+                "Name ELLIPSOID, BOX, CYLINDER, FRUSTUM, TORUS, PLANE, a closed OUTLINE or "
+                "EXTERNAL (.shl, .stl) GRAPHICS in IGEOM and JGEOM (CIRCLE, ARC, POINT or CURVE "
+                "for 2-D contact).");
     return false;
   }
   if (out.marker < 0) return false;
@@ -352,13 +358,13 @@ void readFriction(StatementArguments& a, Contact& c) {
 }
 
 void rejectUnsupported(StatementArguments& a) {
-  for (const char* name :
-       {"ICURVE", "JCURVE", "IFLIP_GEOMETRY", "JFLIP_GEOMETRY", "AUGMENTED_LAGRANGIAN_FORMULATION"})
+  for (const char* name : {"ICURVE", "JCURVE", "AUGMENTED_LAGRANGIAN_FORMULATION"})
     if (const Argument* x = a.find(name))
       a.unsupported(*x,
-                    "Remove it: 3-D solid contact (IGEOM, JGEOM) with IMPACT, POISSON or a "
-                    "user normal law and Coulomb or user friction is what the solver "
-                    "simulates.");
+                    "Remove it: contact of the GRAPHICS in IGEOM and JGEOM (3-D solids, or 2-D "
+                    "CIRCLE, ARC, POINT and CURVE geometry, flipped by IFLIP_GEOMETRY and "
+                    "JFLIP_GEOMETRY) with IMPACT, POISSON or a user normal law and Coulomb or "
+                    "user friction is what the solver simulates.");
   for (const auto& [routine, function] : {std::pair{"NORMAL_ROUTINE", "NORMAL_FUNCTION"},
                                           std::pair{"FRICTION_ROUTINE", "FRICTION_FUNCTION"}})
     if (const Argument* x = a.find(routine); x && !a.find(function))
@@ -380,7 +386,7 @@ bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
                                std::to_string(b.graphicsId);
       if (a.shape == S::Plane && b.shape == S::Plane) {
         diags.error(s.where, s.subject(),
-                    pair + ": two PLANE solids (half-spaces) cannot be in contact",
+                    pair + ": two half-spaces (PLANE or OUTLINE) cannot be in contact",
                     "Replace one of the planes by a BOX, ELLIPSOID, CYLINDER or FRUSTUM.");
         ok = false;
         continue;
@@ -430,6 +436,7 @@ void buildContacts(const std::vector<const Statement*>& statements,
                   "Name the solids of two different parts.");
       continue;
     }
+    if (!checkPlanarContact(*s, c, model, diags)) continue;
     if (!pairsSupported(*s, c, diags)) continue;
     if (!bindContactUserLaws(*s, model, c, diags)) continue;
     c.iMarker = c.iSolids.front().marker;

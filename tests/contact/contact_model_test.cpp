@@ -1,6 +1,6 @@
 // CONTACT at model building and in the Newton matrix (docs/theory.md §6c):
 // - the solids it reads from GRAPHICS (sphere radius from the ELLIPSOID diameters, box extents);
-// - bad input: one located message each for a GRAPHICS that is not a solid, a missing shell
+// - bad input: one located message each for a 2-D CIRCLE against a solid, a missing shell
 //   file, a negative stiffness (and the other refusals of the builder);
 // - the CONTACT(id, jflag, comp, rm) read-back against the law on a resting, penetrating sphere;
 // - the exact partials of the IMPACT law and the friction curve in the Newton matrix against
@@ -70,10 +70,11 @@ void expectOneError(const testing::BuiltModel& b, int line, const std::string& t
   EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
 }
 
-TEST(ContactModel, RefusesAGraphicsThatIsNotASolid) {
+TEST(ContactModel, RefusesACircleAgainstASolid) {
+  // A CIRCLE is 2-D geometry (docs/theory.md §6c, "2-D contact"): not against a BOX.
   expectOneError(deck("CONTACT/1, IGEOM=3, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=10, "
                       "DMAX=1e-3, EXPONENT=2\n"),
-                 11, "GRAPHICS/3 (line 8) is a CIRCLE, not a solid");
+                 11, "GRAPHICS/3 is 2-D geometry and GRAPHICS/1 a 3-D solid");
 }
 
 TEST(ContactModel, RefusesAMissingShellFileByName) {

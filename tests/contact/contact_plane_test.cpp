@@ -220,7 +220,8 @@ TEST(ContactPlane, BadPlanesAndTheTorusAreLocated) {
       "GRAPHICS/3, PLANE, RM=20, XMIN=-1, XMAX=1\n"
       "GRAPHICS/4, TORUS, CM=20, MAJOR_RADIUS=0.1, MINOR_RADIUS=0.1\n";
   const std::string law = ", IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-3, EXPONENT=2\nEND\n";
-  expectOneError(head + "CONTACT/1, IGEOM=2, JGEOM=1" + law, 10, "two PLANE solids");
+  expectOneError(head + "CONTACT/1, IGEOM=2, JGEOM=1" + law, 10,
+                 "two half-spaces (PLANE or OUTLINE)");
   expectOneError(head + "CONTACT/1, IGEOM=3, JGEOM=1" + law, 10,
                  "GRAPHICS/3 (line 8) is a PLANE with 2 of XMIN, XMAX, YMIN, YMAX given");
   expectOneError(head + "CONTACT/1, IGEOM=4, JGEOM=1" + law, 10,

@@ -113,7 +113,7 @@ void curvedNarrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
   if (planeOnI || sj.shape == S::Plane) {
     const model::ContactSolid& pl = planeOnI ? si : sj;
     const model::ContactSolid& o = planeOnI ? sj : si;
-    const SolidFrame<T>& fp = planeOnI ? fi : fj;
+    const SolidFrame<T> fp = planeFrame(pl, planeOnI ? fi : fj);
     const SolidFrame<T>& fo = planeOnI ? fj : fi;
     if (o.shape == S::Ellipsoid) ellipsoidPlane(o, fo, pl, fp, planeOnI, out);
     if (o.shape == S::Torus) torusPlane(o, fo, pl, fp, planeOnI, out);

@@ -6,7 +6,8 @@
 // of each box inside the other: exact for face-on-face and vertex-on-face contact); the pairs
 // with a frustum (CYLINDER, FRUSTUM) are in frustum_narrow_phase.hpp, two frustums in
 // frustum_pair_narrow_phase.hpp, a PLANE's in plane_narrow_phase.hpp; ellipsoids, tori, meshes
-// and steep frustum pairs in curved_narrow_phase.hpp (analytic or FCL).
+// and steep frustum pairs in curved_narrow_phase.hpp (analytic or FCL); the 2-D geometries of
+// planar contact in planar_narrow_phase.hpp.
 
 #include <algorithm>
 #include <vector>
@@ -15,6 +16,7 @@
 #include "mechanics/contact/curved_narrow_phase.hpp"
 #include "mechanics/contact/frustum_narrow_phase.hpp"
 #include "mechanics/contact/frustum_pair_narrow_phase.hpp"
+#include "mechanics/contact/planar_narrow_phase.hpp"
 #include "mechanics/contact/plane_narrow_phase.hpp"
 
 namespace openmss::mechanics::contact {
@@ -115,6 +117,10 @@ bool narrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
                  const model::ContactSolid& sj, const SolidFrame<T>& fj,
                  std::vector<ContactPoint<T>>& out) {
   using S = model::ContactSolid::Shape;
+  if (model::planarShape(si.shape) || model::planarShape(sj.shape)) {  // 2-D contact
+    planarNarrowPhase(si, fi, sj, fj, out);
+    return true;
+  }
   if (curvedPair(si, sj)) {
     curvedNarrowPhase(si, fi, sj, fj, out);
     return true;

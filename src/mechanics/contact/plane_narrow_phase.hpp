@@ -12,11 +12,33 @@
 
 namespace openmss::mechanics::contact {
 
-// Whether x lies over the plane's rectangle (its projection on the xy-plane, on values).
+// Whether (x, y) lies inside the polygon (even-odd rule: a ray along +x crosses its edges an
+// odd number of times). Deterministic, on values; a point on an edge may count either way.
+inline bool insidePolygon(const std::vector<Eigen::Vector2d>& poly, double x, double y) {
+  bool inside = false;
+  for (size_t k = 0, j = poly.size() - 1; k < poly.size(); j = k++) {
+    const Eigen::Vector2d &a = poly[k], &b = poly[j];
+    if ((a.y() > y) != (b.y() > y) && x < a.x() + (y - a.y()) * (b.x() - a.x()) / (b.y() - a.y()))
+      inside = !inside;
+  }
+  return inside;
+}
+
+// The plane's own frame: the reference marker's, turned to the OUTLINE's plane axes when the
+// plane is an OUTLINE (theory §6c, "OUTLINE floors"); a PLANE's is its RM marker's.
+template <class T>
+SolidFrame<T> planeFrame(const model::ContactSolid& pl, const SolidFrame<T>& fm) {
+  if (pl.polygon.empty()) return fm;
+  return {fm.p, fm.a * M3<T>::from(pl.planeAxes)};
+}
+
+// Whether x lies over the plane's rectangle or OUTLINE polygon (its projection on the
+// xy-plane of the plane's frame `fp`, on values).
 template <class T>
 bool overPlane(const model::ContactSolid& pl, const SolidFrame<T>& fp, const V3<T>& x) {
   const V3<T> q = fp.a.tmul(x - fp.p);
   const double qx = valueOf(q[0]), qy = valueOf(q[1]);
+  if (!pl.polygon.empty()) return insidePolygon(pl.polygon, qx, qy);
   return qx >= pl.bounds[0] && qx <= pl.bounds[1] && qy >= pl.bounds[2] && qy <= pl.bounds[3];
 }
 
@@ -82,7 +104,7 @@ bool planeNarrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
   if (planeOnI == (sj.shape == S::Plane)) return false;
   const model::ContactSolid& pl = planeOnI ? si : sj;
   const model::ContactSolid& other = planeOnI ? sj : si;
-  const SolidFrame<T>& fp = planeOnI ? fi : fj;
+  const SolidFrame<T> fp = planeFrame(pl, planeOnI ? fi : fj);
   const SolidFrame<T>& fo = planeOnI ? fj : fi;
   if (other.shape == S::Sphere) {
     ContactPoint<T> cp;
