@@ -6,7 +6,7 @@ set -euo pipefail
 packages=(
   build-essential cmake ninja-build pkg-config
   libeigen3-dev          # dense linear algebra in the numerical core
-  libsuitesparse-dev     # KLU: sparse LU of large Newton matrices (solvers/klu_linear_solver); SPQR: rank of large constraint Jacobians (mechanics/sparse_constraint_jacobian)
+  libsuitesparse-dev     # KLU: sparse LU of large Newton matrices (solvers/klu_linear_solver), AMD: the supernodal LU's ordering (solvers/supernodal_linear_solver), UMFPACK and CHOLMOD: bench/factor_matrix.cpp; SPQR: rank of large constraint Jacobians (mechanics/sparse_constraint_jacobian)
   libsundials-dev        # IDA (DSTIFF) and CVODE's Adams method (ABAM) integrators
   libxml2-dev            # the results file (.res, XML): output/results_file*.cpp
   libfcl-dev libccd-dev  # FCL (libccd GJK/MPR, meshes): CONTACT's library narrow phase (mechanics/contact/fcl_narrow_phase.cpp)

@@ -161,7 +161,7 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
     // factors, so its first matrix is a refactorisation on the last pivots (guarded by the
     // condition estimate) instead of a full factorisation (a pile restarts at nearly every
     // step: 7-12 % of its CPU at N = 64 and 100, docs/performance.md, "Contact pile").
-    solver_ = &klu_;
+    solver_ = &sparseSolver_;
   } else {
     solver_ = &dense_;
   }
@@ -302,7 +302,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       for (int c = 0; c < sparseJac_.outerSize(); ++c)
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
-      klu_.factor(sparseJac_);
+      sparseSolver_.factor(sparseJac_);
     } else {
       problem_.newtonMatrix(tNew, yPred_, ypNew_, cj, jac_);
       jac_.array().colwise() *= rowScale_.array();

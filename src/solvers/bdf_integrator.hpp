@@ -13,8 +13,8 @@
 #include "solvers/dae_problem.hpp"
 #include "solvers/dense_linear_solver.hpp"
 #include "solvers/integrator.hpp"
-#include "solvers/klu_linear_solver.hpp"
 #include "solvers/multistep_settings.hpp"
+#include "solvers/sparse_linear_solver.hpp"
 
 namespace openmss::solvers {
 
@@ -53,6 +53,8 @@ class BdfIntegrator final : public Integrator {
   static constexpr int kSparseThreshold = 100;
   // "KLU" or "dense LU": the linear solver of the current run.
   const char* linearSolverName() const { return solver_->name(); }
+  // The solver of the sparse path (KLU or the supernodal LU by its rule), for tests.
+  SparseLinearSolver& sparseLinearSolver() { return sparseSolver_; }
 
  private:
   bool attemptStep(double h, int k, bool* newtonFailed, double* errorNorm);
@@ -104,7 +106,7 @@ class BdfIntegrator final : public Integrator {
   Eigen::MatrixXd jac_;
   Eigen::SparseMatrix<double> sparseJac_;
   DenseLinearSolver dense_;
-  KluLinearSolver klu_;
+  SparseLinearSolver sparseSolver_;
   LinearSolver* solver_ = &dense_;
   // Per-unknown masks fixed at start(): 1 where the unknown is under error control / has a
   // derivative in G (velocities of an index-3 problem have one but no error control).

@@ -1,9 +1,9 @@
 #include "solvers/klu_linear_solver.hpp"
 
+#include <klu.h>
+
 #include <algorithm>
 #include <limits>
-
-#include <klu.h>
 
 namespace openmss::solvers {
 
@@ -22,6 +22,10 @@ KluLinearSolver::~KluLinearSolver() {
 
 long KluLinearSolver::factorNonZeros() const {
   return impl_->numeric ? static_cast<long>(impl_->numeric->lnz) + impl_->numeric->unz : 0;
+}
+
+double KluLinearSolver::predictedFlops() const {
+  return impl_->symbolic && impl_->symbolic->ordering == 0 ? impl_->symbolic->est_flops : 0.0;
 }
 
 void KluLinearSolver::setOptions(const Options& options) {

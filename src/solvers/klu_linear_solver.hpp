@@ -27,6 +27,9 @@ class KluLinearSolver final : public LinearSolver {
   int refactorizations() const { return refactor_; }
   // Entries of the L and U factors of the last factorisation (the fill; a solve reads each once).
   long factorNonZeros() const;
+  // The floating-point operations of a factorisation as the last analysis predicts them
+  // (AMD's count on the diagonal blocks of the BTF form; 0 before an analysis or with COLAMD).
+  double predictedFlops() const;
 
   // KLU's ordering choices, applied at the next analyze(): fill-reducing ordering AMD (0) or
   // COLAMD (1), block triangular form first, the partial-pivoting tolerance (a diagonal entry is
