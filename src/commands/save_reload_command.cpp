@@ -257,7 +257,7 @@ bool Session::reloadSystem(const language::Statement& c, const analysis::SaveFil
 
 bool Session::switchOutputPrefix(const language::Statement& c) {
   const std::string prefix = argumentWord(c, "OUTPUT_PREFIX");
-  req_.close();    // the next output step opens <prefix>.req with its header
+  req_.close();  // the next output step opens <prefix>.req with its header
   closeResults();  // and <prefix>.res
   msg_.line(" Output continues in " + prefix + ".msg and " + prefix + ".req");
   msg_.close();
