@@ -26,12 +26,18 @@ namespace openmss::contact_test {
 
 using mechanics::StateLayout;
 
-inline model::Model build(const std::string& text) {
+// Reads `text` as contact.adm and builds it (the build must succeed), diagnostics into `d`.
+inline model::Model readAndBuild(const std::string& text, Diagnostics& d) {
   language::Dataset ds;
-  Diagnostics d;
   language::readDatasetText(text, "contact.adm", ds, d);
   model::Model m;
   EXPECT_TRUE(model::buildModel(ds, m, d));
+  return m;
+}
+
+inline model::Model build(const std::string& text) {
+  Diagnostics d;
+  model::Model m = readAndBuild(text, d);
   // A PLANE's "not drawn by the viewer" warning is expected; any other diagnostic fails.
   for (const auto& x : d.all())
     if (format(x).find("are not drawn by the viewer") == std::string::npos)
@@ -42,11 +48,8 @@ inline model::Model build(const std::string& text) {
 // build(), failing on errors only: warnings (a PLANE or OUTLINE not drawn by the viewer, ...)
 // are expected.
 inline model::Model buildFailingOnErrors(const std::string& text) {
-  language::Dataset ds;
   Diagnostics d;
-  language::readDatasetText(text, "contact.adm", ds, d);
-  model::Model m;
-  EXPECT_TRUE(model::buildModel(ds, m, d));
+  model::Model m = readAndBuild(text, d);
   for (const auto& x : d.all())
     if (x.severity == Severity::Error) ADD_FAILURE() << format(x);
   return m;
