@@ -19,11 +19,10 @@ pair elements and the 1000-sphere pile (499,500 statements) is measured only whe
 import argparse
 import math
 import os
-import re
-import resource
 import subprocess
 import tempfile
-import time
+
+from openmss_run import run_command_file
 
 RADIUS, MASS, SPACING = 0.05, 0.1, 0.12
 
@@ -96,15 +95,8 @@ def run_openmss(openmss, n, end, error, workdir):
     with open(os.path.join(workdir, "pile.acf"), "w") as f:
         f.write(f"pile.adm\npile\nINTEGRATOR/GSTIFF, ERROR={error:g}\n"
                 f"SIMULATE/DYNAMIC, END={end:g}, STEPS=10\nSTOP\n")
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    proc = subprocess.run([openmss, "run", "pile.acf"], cwd=workdir, capture_output=True,
-                          text=True)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    m = re.search(r"reached t = (\S+) with (\d+) integration steps", proc.stdout + proc.stderr)
-    if proc.returncode != 0 or not m:
+    proc, wall, cpu, m = run_command_file(openmss, "pile.acf", workdir)
+    if not m:
         tail = (proc.stdout + proc.stderr).strip().splitlines()[-1:]
         return {"wall": wall, "cpu": cpu, "status": "failed", "note": tail}
     return {"wall": wall, "cpu": cpu, "steps": int(m.group(2)), "t": float(m.group(1)),

@@ -23,11 +23,10 @@ ours, not the same trajectory.
 """
 import argparse
 import os
-import re
-import resource
 import subprocess
 import tempfile
-import time
+
+from openmss_run import run_command_file
 
 H = 0.865  # pelvis height at t = 0: the feet's soles 5 mm above the floor
 THIGH, SHANK = 0.4, 0.4
@@ -121,15 +120,8 @@ def run_openmss(openmss, end, error, steps, workdir):
     with open(os.path.join(workdir, "walk.acf"), "w") as f:
         f.write(f"walk.adm\nwalk\nINTEGRATOR/GSTIFF, ERROR={error:g}\n"
                 f"SIMULATE/DYNAMIC, END={end:g}, STEPS={steps}\nSTOP\n")
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    start = time.perf_counter()
-    proc = subprocess.run([openmss, "run", "walk.acf"], cwd=workdir, capture_output=True,
-                          text=True)
-    wall = time.perf_counter() - start
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    cpu = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    m = re.search(r"reached t = (\S+) with (\d+) integration steps", proc.stdout + proc.stderr)
-    if proc.returncode != 0 or not m:
+    proc, wall, cpu, m = run_command_file(openmss, "walk.acf", workdir)
+    if not m:
         tail = (proc.stdout + proc.stderr).strip().splitlines()[-2:]
         return {"wall": wall, "cpu": cpu, "status": "failed", "note": tail}
     req = read_req(os.path.join(workdir, "walk.req"))

@@ -21,6 +21,8 @@
 #include <sstream>
 #include <string>
 
+#include "mujoco_support.hpp"
+
 int main(int argc, char** argv) {
   if (argc != 5) {
     std::fprintf(stderr, "usage: mujoco_pile N K END DT\n");
@@ -60,25 +62,17 @@ int main(int argc, char** argv) {
   x << "</worldbody></mujoco>";
   // MuJoCo 2.2 loads XML from files: write it next to the working directory's temporary files.
   const std::string path = "/tmp/openmss_mujoco_pile_" + std::to_string(n) + ".xml";
-  std::ofstream(path) << x.str();
-  char error[1000] = "";
-  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
-  std::remove(path.c_str());
-  if (!m) {
-    std::fprintf(stderr, "MuJoCo: %s\n", error);
-    return 1;
-  }
+  mjModel* m = loadModelXml(x.str(), path);
+  if (!m) return 1;
   mjData* d = mj_makeData(m);
-  const auto start = std::chrono::steady_clock::now();
-  const std::clock_t cpuStart = std::clock();
+  const StepTimer timer;
   long steps = 0;
   while (d->time < end - 0.5 * dt) {
     mj_step(m, d);
     ++steps;
   }
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+  const double wall = timer.wall();
+  const double cpu = timer.cpu();
   double height = 0.0;
   for (int i = 0; i < n; ++i) height += d->qpos[7 * i + 2];
   std::printf("wall=%.6f\ncpu=%.6f\nsteps=%ld\nmean_height=%.9f\n", wall, cpu, steps, height / n);

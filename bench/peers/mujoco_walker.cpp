@@ -26,6 +26,8 @@
 #include <sstream>
 #include <string>
 
+#include "mujoco_support.hpp"
+
 namespace {
 
 constexpr double kH = 0.865;  // the pelvis height at t = 0 (bench/walking_foot.py's H)
@@ -90,17 +92,10 @@ int main(int argc, char** argv) {
   }
   const double end = std::atof(argv[1]), dt = std::atof(argv[2]);
   const std::string path = "/tmp/openmss_mujoco_walker.xml";
-  std::ofstream(path) << model(dt);
-  char error[1000] = "";
-  mjModel* m = mj_loadXML(path.c_str(), nullptr, error, sizeof error);
-  std::remove(path.c_str());
-  if (!m) {
-    std::fprintf(stderr, "MuJoCo: %s\n", error);
-    return 1;
-  }
+  mjModel* m = loadModelXml(model(dt), path);
+  if (!m) return 1;
   mjData* d = mj_makeData(m);
-  const auto start = std::chrono::steady_clock::now();
-  const std::clock_t cpuStart = std::clock();
+  const StepTimer timer;
   long steps = 0;
   const long outputEvery = std::max(1L, std::lround(0.01 / dt));  // every 0.01 s
   double lowest = kH, depth = -1.0;
@@ -118,9 +113,8 @@ int main(int argc, char** argv) {
           depth = std::max(depth, -(p[2] + r[6] * cx + r[7] * cy + r[8] * -0.02));
     }
   }
-  const double wall =
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  const double cpu = static_cast<double>(std::clock() - cpuStart) / CLOCKS_PER_SEC;
+  const double wall = timer.wall();
+  const double cpu = timer.cpu();
   std::printf("wall=%.6f\ncpu=%.6f\nsteps=%ld\nwalked=%.9f\nlowest=%.9f\ndepth=%.9f\n", wall, cpu,
               steps, d->qpos[0], lowest, depth);
   mj_deleteData(d);

@@ -29,7 +29,7 @@ std::vector<std::string> fileLines(const std::string& path) {
 std::string firstValue(const language::Statement& c, const char* argument) {
   const language::Argument* a = c.find(argument);
   // `written` keeps the file name's case; `text` is upper-cased.
-  return a && !a->values.empty() ? a->values[0].written : std::string();
+  return a && !a->values.empty() ? a->values[0].written.str() : std::string();
 }
 
 }  // namespace

@@ -26,6 +26,7 @@
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "model/model_builder.hpp"
+#include "model/releasing_build.hpp"
 #include "model/results_arguments.hpp"
 #include "user/element_routine.hpp"
 #include "user/user_library.hpp"
@@ -204,8 +205,11 @@ int check(const std::string& path) {
   model::Model m;
   bool built = false;
   // Build even after reading errors, so that one pass reports the model-level errors too.
-  built = model::buildModel(ds, m, diags);
+  built = model::buildModelReleasingContacts(ds, m, diags);
   model::readResultsSettings(ds, diags);  // RESULTS and CNAMES diagnostics, as a run gives them
+  // Nothing below reads the statements: the tree is released before the system is set up
+  // (a large data set's tree is the largest part of a check; docs/performance.md).
+  ds = language::Dataset();
   app::printDiagnostics(diags);
   if (!built || diags.hasErrors()) {
     std::printf("%s: %d error(s), %d warning(s)\n", path.c_str(), diags.errorCount(),

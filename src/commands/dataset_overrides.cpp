@@ -51,6 +51,12 @@ struct Relocate {
     where.line = index;
     if (where.column >= t.splitColumn) where.column -= t.shift;
   }
+  // The arguments' and values' locations (language/dataset.hpp keeps them compact).
+  void operator()(CompactLocation& where) const {
+    SourceLocation full = where;
+    (*this)(full);
+    where = CompactLocation(full);
+  }
 };
 
 void relocate(language::Statement& s, const Relocate& r) {

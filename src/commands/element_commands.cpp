@@ -92,7 +92,7 @@ bool Session::switchElements(const language::Statement& c) {
           "Give ID=id[,id...] or RANGE=first,last.");
     return false;
   }
-  const std::vector<long> present = statementIds(dataset_, kind);
+  const std::vector<long> present = statementIds(dataset(), kind);
   std::vector<long> chosen;
   if (ids) {
     for (const auto& v : ids->values) {
@@ -158,7 +158,7 @@ bool Session::redefine(const language::Statement& c) {
         return false;
       }
   if (needsId) {
-    const auto ids = statementIds(dataset_, c.name);
+    const auto ids = statementIds(dataset(), c.name);
     if (std::find(ids.begin(), ids.end(), *c.id) == ids.end()) {
       error(c, c.subject() + " does not exist in the data set",
             "A command changes a statement of the data set; nothing was changed.");
@@ -176,7 +176,7 @@ bool Session::redefine(const language::Statement& c) {
     // Listed as redefined even while deactivated (the listing then says so).
     ModelEdits listing = pendingEdits_;
     const bool inactive = listing.inactive.erase({c.name, c.id.value_or(0)}) > 0;
-    const language::Dataset edited = editedDataset(dataset_, listing);
+    const language::Dataset edited = editedDataset(dataset(), listing);
     bool listed = false;
     for (const auto& s : edited.statements)
       if (s.name == c.name && s.id.value_or(0) == c.id.value_or(0)) {
@@ -196,7 +196,7 @@ bool Session::redefine(const language::Statement& c) {
 bool Session::acceptEdits(const language::Statement& c, const ModelEdits& next) {
   Diagnostics local;
   model::Model trial;
-  model::buildModel(editedDataset(dataset_, next), trial, local);
+  model::buildModel(editedDataset(dataset(), next), trial, local);
   Diagnostics own;
   for (const auto& d : local.all())
     if (d.severity == Severity::Error && d.where.file == c.where.file) own.add(d);
@@ -213,7 +213,7 @@ bool Session::applyEdits(const language::Statement& c) {
   if (!editsPending_) return true;
   Diagnostics local;
   auto m = std::make_unique<model::Model>();
-  model::buildModel(editedDataset(dataset_, pendingEdits_), *m, local);
+  model::buildModel(editedDataset(dataset(), pendingEdits_), *m, local);
   if (local.hasErrors()) {
     const Diagnostic* first = nullptr;
     for (const auto& d : local.all())

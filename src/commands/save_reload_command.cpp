@@ -30,7 +30,7 @@ namespace fs = std::filesystem;
 std::string argumentWord(const language::Statement& c, const char* name) {
   const language::Argument* a = c.find(name);
   // `written` keeps a file name's case; `text` is upper-cased.
-  return a && !a->values.empty() ? a->values[0].written : std::string();
+  return a && !a->values.empty() ? a->values[0].written.str() : std::string();
 }
 
 // Commands that change neither the model nor its settings: not replayed by RELOAD/SYSTEM.
@@ -213,6 +213,7 @@ bool Session::reloadSystem(const language::Statement& c, const analysis::SaveFil
   // The element commands among those replayed edit this data set (model_edits.hpp); the
   // edits are applied before the states are restored, so that the states meet the model
   // they were saved from.
+  this->dataset();  // the loaded tree, if released, is put back as it was on a refusal
   language::Dataset oldDataset = std::exchange(dataset_, dataset);
   const ModelEdits oldPending = std::exchange(pendingEdits_, ModelEdits{});
   const ModelEdits oldApplied = std::exchange(appliedEdits_, ModelEdits{});

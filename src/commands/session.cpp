@@ -17,6 +17,7 @@
 #include "language/reader.hpp"
 #include "model/graphics_builder.hpp"
 #include "model/model_builder.hpp"
+#include "model/releasing_build.hpp"
 #include "output/request_header.hpp"
 
 namespace openmss::commands {
@@ -111,13 +112,19 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   pendingEdits_ = appliedEdits_ = ModelEdits{};
   editsPending_ = false;
   model_ = std::make_unique<model::Model>();
-  model::buildModel(dataset, *model_, readDiags);  // model checks even after read errors
+  // Model checks even after read errors. The CONTACTs' arguments are released as they are
+  // built, and the rest of the tree below: dataset() reads it again when a command needs it.
+  model::buildModelReleasingContacts(dataset, *model_, readDiags);
   // The .res of RESULTS, with REQUEST's CNAMES (model/results_arguments.hpp).
   results_ = model::readResultsSettings(dataset, readDiags);
   reportAll(readDiags);
   msg_.line("");
   msg_.line(" Model title: " + dataset.title);
-  dataset_ = std::move(dataset);  // the model of later element commands is built from it
+  // Released: the element commands build their model from dataset(), read again.
+  dataset = language::Dataset();
+  dataset_ = language::Dataset();
+  datasetPath_ = path;
+  datasetReleased_ = true;
   // Only this data set's errors count: at the prompt, earlier commands may have failed.
   if (readDiags.hasErrors()) {
     msg_.line(" The data set has " + std::to_string(readDiags.errorCount()) +
@@ -134,6 +141,18 @@ bool Session::loadModel(const std::string& path, const std::string& outputPrefix
   state_->grueblerCount = dof.gruebler;
   reportModelSummary(dof);
   return true;
+}
+
+// The same text with the same --set overrides gives the same tree; its diagnostics were
+// reported when the model was loaded.
+const language::Dataset& Session::dataset() {
+  if (datasetReleased_) {
+    Diagnostics again;
+    language::readDatasetText(datasetText_, datasetPath_, dataset_, again);
+    applyOverrides(options_.overrides, dataset_, again);
+    datasetReleased_ = false;
+  }
+  return dataset_;
 }
 
 void Session::reportModelSummary(const analysis::DegreeOfFreedomCount& dof) {
@@ -272,7 +291,7 @@ bool Session::writeGraphicsFrame(const analysis::OutputFrame& frame) {
     const std::string path =
         (std::filesystem::path(options_.outputDirectory) / (prefix_ + ".gra")).string();
     Diagnostics checked;  // the model build reported them already
-    const std::vector<model::Graphic> graphics = model::buildGraphics(dataset_, *model_, checked);
+    const std::vector<model::Graphic> graphics = model::buildGraphics(dataset(), *model_, checked);
     std::string err;
     if (!gra_.open(path, output::requestFileHeader(*model_, nullptr), *model_, graphics, &err)) {
       graFailed_ = true;

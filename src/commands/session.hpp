@@ -181,10 +181,17 @@ class Session final : private analysis::RunReport {
   bool outFailed_ = false;
   bool writeGraphicsFrame(const analysis::OutputFrame& frame);
   std::string prefix_;
-  language::Dataset dataset_;  // as read; never edited (model_edits.hpp)
-  ModelEdits pendingEdits_;    // as the commands so far leave the model
-  ModelEdits appliedEdits_;    // as the model_ of the last analysis was built
-  bool editsPending_ = false;  // pendingEdits_ differ from appliedEdits_
+  // The data set as read; never edited (model_edits.hpp). A loaded model's statement tree is
+  // released once the model is built and read again from datasetText_ by dataset() when a
+  // command needs it (element commands, GRSAVE's graphics, RELOAD/SYSTEM's fallback): a run of
+  // a large data set does not hold it (docs/performance.md, "Memory of a parsed data set").
+  const language::Dataset& dataset();
+  language::Dataset dataset_;
+  bool datasetReleased_ = false;  // dataset_ is empty; dataset() reads datasetText_ again
+  std::string datasetPath_;       // the file datasetText_ was read from
+  ModelEdits pendingEdits_;       // as the commands so far leave the model
+  ModelEdits appliedEdits_;       // as the model_ of the last analysis was built
+  bool editsPending_ = false;     // pendingEdits_ differ from appliedEdits_
   std::unique_ptr<model::Model> model_;
   std::unique_ptr<mechanics::MultibodySystem> system_;
   std::unique_ptr<analysis::RunState> state_;

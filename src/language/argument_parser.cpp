@@ -17,10 +17,10 @@ void GroupParser::parseArguments(Statement& st, const StatementSpec& spec, bool 
                                  bool hadSlash) {
   bool separatorPending = false;
   bool slashReported = false;
-  SourceLocation separatorWhere;
+  CompactLocation separatorWhere;
   while (true) {
     skipBlanks(true);
-    const SourceLocation before = here();
+    const CompactLocation before = here();
     const Separator s = readSeparator();
     if (s == Separator::End || s == Separator::Semicolon) {
       if (separatorPending)
@@ -69,7 +69,7 @@ void GroupParser::parseArguments(Statement& st, const StatementSpec& spec, bool 
 
 bool GroupParser::parseArgument(Statement& st, const StatementSpec& spec) {
   skipBlanks(true);
-  const SourceLocation where = here();
+  const CompactLocation where = here();
   const std::string spelled = readName();
   if (spelled.empty()) {
     std::string found = peek() == '"' ? std::string("\"") : readRawToken();
@@ -409,7 +409,7 @@ void GroupParser::parseText(Argument& arg) {
   Value v;
   v.kind = Value::Kind::Word;
   v.where = here();
-  v.text = v.written = trimmed(text().substr(c_.pos));
+  v.text = v.written = trimmed(std::string(text().substr(c_.pos)));
   c_.pos = text().size();
   arg.values.push_back(std::move(v));
 }

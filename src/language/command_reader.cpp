@@ -11,8 +11,13 @@ CommandReader::CommandReader(std::string sourceName, int firstLineNumber)
 
 bool CommandReader::feedLine(std::string_view raw) {
   while (!raw.empty() && (raw.back() == '\n' || raw.back() == '\r')) raw.remove_suffix(1);
-  SourceLine line = prepareLine(raw, nextLineNumber_++);
-  if (line.blank()) return needsMoreLines();  // blank and comment lines change nothing
+  // The line's text is a view: it is kept with the pending lines until they are parsed.
+  pendingText_.emplace_back(raw);
+  SourceLine line = prepareLine(pendingText_.back(), nextLineNumber_++);
+  if (line.blank()) {  // blank and comment lines change nothing
+    pendingText_.pop_back();
+    return needsMoreLines();
+  }
   if (pending_.empty() && line.text[line.firstColumn() - 1] == ',') {
     // Commands continue only after '&': a prompt cannot wait to see whether the next line
     // starts with ',' before running the command it has.
@@ -20,6 +25,7 @@ bool CommandReader::feedLine(std::string_view raw) {
                  "a command continues on a new line only after '&' at the end of the "
                  "previous line",
                  "End the previous line with '&'");
+    pendingText_.pop_back();
     return false;
   }
   const bool more = line.endsWithAmpersand;
@@ -45,6 +51,7 @@ void CommandReader::parsePending() {
   auto commands =
       parseStatementGroup(pieces, InputKind::Command, source_, diags_, previousSubject_);
   pending_.clear();
+  pendingText_.clear();
   for (auto& c : commands) {
     previousSubject_ = c.subject();
     if (c.name == "STOP") sawStop_ = true;

@@ -3,6 +3,7 @@
 // feed it one physical line at a time; a line ending with '&' asks for the next line, and
 // every complete command comes out as a Statement with its source location.
 
+#include <deque>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -38,7 +39,8 @@ class CommandReader {
 
   std::string source_;
   int nextLineNumber_;
-  std::vector<SourceLine> pending_;  // the lines of the command being continued with '&'
+  std::vector<SourceLine> pending_;      // the lines of the command being continued with '&'
+  std::deque<std::string> pendingText_;  // their raw text (SourceLine::text views into it)
   std::vector<Statement> ready_;
   Diagnostics diags_;
   std::string previousSubject_;

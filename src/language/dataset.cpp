@@ -3,12 +3,12 @@
 namespace openmss::language {
 
 std::string Statement::subject() const {
-  std::string s = name;
+  std::string s = name.str();
   if (id) s += "/" + std::to_string(*id);
   return s;
 }
 
-const Argument* Statement::find(const std::string& canonicalName) const {
+const Argument* Statement::find(std::string_view canonicalName) const {
   // The last occurrence wins, as ADAMS keeps the last value of a repeated argument.
   const Argument* found = nullptr;
   for (const auto& a : args)

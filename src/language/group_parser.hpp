@@ -42,6 +42,7 @@ class GroupParser {
       : pieces_(pieces),
         kind_(kind),
         file_(file),
+        fileIndex_(internFileName(file)),
         diags_(diags),
         previousSubject_(previousSubject),
         table_(kind == InputKind::DataSet ? statementSchema() : commandSchema()),
@@ -53,12 +54,15 @@ class GroupParser {
  private:
   // --- cursor ------------------------------------------------------------------------------
   const SourceLine& line() const { return *pieces_[c_.piece].line; }
-  const std::string& text() const { return line().text; }
+  std::string_view text() const { return line().text; }
   char peek() const { return c_.pos < text().size() ? text()[c_.pos] : '\0'; }
   bool atLineEnd() const { return c_.pos >= text().size(); }
   bool hasNextPiece() const { return c_.piece + 1 < pieces_.size(); }
   LineJoin nextJoin() const { return pieces_[c_.piece + 1].join; }
-  SourceLocation here() const { return {file_, line().number, static_cast<int>(c_.pos) + 1}; }
+  // The cursor's location; compact (the file's interned index), as the tree keeps it.
+  CompactLocation here() const {
+    return CompactLocation::inFile(fileIndex_, line().number, static_cast<int>(c_.pos) + 1);
+  }
   void enterNextPiece() {
     ++c_.piece;
     // The comma in column 1 of a comma continuation line is not statement text.
@@ -120,6 +124,7 @@ class GroupParser {
   const std::vector<LinePiece>& pieces_;
   InputKind kind_;
   const std::string& file_;
+  std::uint32_t fileIndex_;  // file_ in the table of CompactLocation
   Diagnostics& diags_;
   const std::string& previousSubject_;
   const std::vector<StatementSpec>& table_;

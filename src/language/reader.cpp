@@ -68,7 +68,7 @@ class DuplicateFilter {
 
  private:
   Diagnostics& diags_;
-  std::map<std::pair<std::string, long>, size_t> seen_;
+  std::map<std::pair<CompactString, long>, size_t> seen_;
 };
 
 }  // namespace
@@ -170,8 +170,21 @@ void readDatasetText(std::string_view text, const std::string& fileName, Dataset
   if (!out.sawEnd)
     diags.warning({fileName, static_cast<int>(lines.size()), 0}, "",
                   "the data set has no END statement", "Add END as the last statement");
-  for (size_t k = 0; k < statements.size(); ++k)
-    if (!superseded[k]) out.statements.push_back(std::move(statements[k]));
+  // Superseded definitions are dropped in place, and the statements handed over without a
+  // second array of them (a large data set's tree is its largest part; docs/performance.md).
+  size_t kept = 0;
+  for (size_t k = 0; k < statements.size(); ++k) {
+    if (superseded[k]) continue;
+    if (kept != k) statements[kept] = std::move(statements[k]);
+    ++kept;
+  }
+  statements.resize(kept);
+  if (out.statements.empty()) {
+    out.statements = std::move(statements);
+  } else {
+    out.statements.reserve(out.statements.size() + statements.size());
+    for (auto& st : statements) out.statements.push_back(std::move(st));
+  }
 }
 
 bool readDatasetFile(const std::string& path, Dataset& out, Diagnostics& diags,

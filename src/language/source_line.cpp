@@ -4,7 +4,7 @@ namespace openmss::language {
 
 int SourceLine::firstColumn() const {
   auto p = text.find_first_not_of(" \t");
-  return p == std::string::npos ? 0 : static_cast<int>(p) + 1;
+  return p == std::string_view::npos ? 0 : static_cast<int>(p) + 1;
 }
 
 SourceLine prepareLine(std::string_view raw, int number) {
@@ -28,7 +28,7 @@ SourceLine prepareLine(std::string_view raw, int number) {
     --end;
     while (end > 0 && isBlank(raw[end - 1])) --end;
   }
-  line.text = std::string(raw.substr(0, end));
+  line.text = raw.substr(0, end);
   return line;
 }
 

@@ -3,6 +3,9 @@
 // comment and trailing blanks are removed, and a final '&' (continuation) is taken off and
 // remembered. What is left is the statement text of the line; the five-blank comment rule is
 // applied later by the parser because it does not hold inside expressions and text.
+// The text is a view into the raw line: whoever prepares lines keeps their text alive while the
+// lines are parsed (a data set's whole file, reader.cpp; a command's pending lines,
+// command_reader.cpp), so a data set's lines are not copied (docs/performance.md).
 
 #include <string>
 #include <string_view>
@@ -12,12 +15,12 @@ namespace openmss::language {
 
 struct SourceLine {
   int number = 0;                  // 1-based physical line number
-  std::string text;                // statement text (see above)
+  std::string_view text;           // statement text (see above), a view into the raw line
   bool endsWithAmpersand = false;  // the statement text ended with '&'
   int ampersandColumn = 0;         // 1-based column of that '&'
   int rawLength = 0;               // characters on the line, terminator excluded
 
-  bool blank() const { return text.find_first_not_of(" \t") == std::string::npos; }
+  bool blank() const { return text.find_first_not_of(" \t") == std::string_view::npos; }
   // 1-based column of the first non-blank character (0 when blank). A tab counts as one.
   int firstColumn() const;
 };

@@ -134,7 +134,7 @@ std::optional<Statement> GroupParser::parseStatement() {
   bool hadSlash = false;
   bool looksLikeArgument = peek() == '=';
   std::string idText;
-  SourceLocation idWhere;
+  CompactLocation idWhere;
   if (peek() == '/') {
     hadSlash = true;
     ++c_.pos;
@@ -187,6 +187,8 @@ std::optional<Statement> GroupParser::parseStatement() {
   }
 
   parseArguments(st, spec, !idText.empty(), hadSlash);
+  // The tree of a large data set is kept whole: no spare capacity (docs/performance.md).
+  st.args.shrink_to_fit();
   st.lastLine = line().number;
   if (kind_ == InputKind::DataSet && requireArguments_) checkRequired(st, spec);
   return st;

@@ -3,6 +3,7 @@
 // normal law (IMPACT or POISSON) and Coulomb friction, with a located diagnostic for every
 // geometry or argument the solver does not simulate.
 
+#include <functional>
 #include <vector>
 
 #include "common/diagnostics.hpp"
@@ -12,9 +13,11 @@
 namespace openmss::model {
 
 // Builds every CONTACT of `statements` (after parts and markers), reading the GRAPHICS
-// statements of `dataset` they name.
+// statements of `dataset` they name. `done`, when given, is called with each statement once
+// nothing more is read from it (buildModelReleasingContacts releases its arguments).
 void buildContacts(const std::vector<const language::Statement*>& statements,
-                   const language::Dataset& dataset, Model& model, Diagnostics& diags);
+                   const language::Dataset& dataset, Model& model, Diagnostics& diags,
+                   const std::function<void(const language::Statement&)>& done = {});
 
 // The index of CONTACT/id in model.contacts, -1 when there is none.
 int findContact(const Model& model, long id);

@@ -1,6 +1,7 @@
 #include "model/model_builder.hpp"
 
 #include <algorithm>
+#include <functional>
 #include <map>
 #include <set>
 
@@ -17,6 +18,7 @@
 #include "model/material_builder.hpp"
 #include "model/motion_builder.hpp"
 #include "model/part_builder.hpp"
+#include "model/releasing_build.hpp"
 #include "model/point_curve_builder.hpp"
 #include "model/curve_curve_builder.hpp"
 #include "model/request_builder.hpp"
@@ -476,7 +478,10 @@ bool bindParsedExpression(const Model& model, const SourceLocation& where,
   return ok;
 }
 
-bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& diags) {
+namespace {
+
+bool build(const language::Dataset& dataset, Model& model, Diagnostics& diags,
+           const std::function<void(const Statement&)>& contactDone) {
   const int errorsBefore = diags.errorCount();
   model = Model{};
   model.title = dataset.title;
@@ -512,7 +517,7 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   // not drawn); the viewer's scene builds them again for their geometry.
   (void)buildGraphics(dataset, model, diags);
   // CONTACT (contact_builder.cpp): reads the GRAPHICS solids, after every marker exists.
-  buildContacts(groups.contacts, dataset, model, diags);
+  buildContacts(groups.contacts, dataset, model, diags, contactDone);
 
   // Functions, once every element they may read exists (a force may read another's force).
   bindSForceFunctions(groups.sforces, model, diags);
@@ -522,6 +527,21 @@ bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& dia
   bindSensorFunctions(dataset, model, diags);
   buildRequests(groups.requests, model, diags);  // last: a request may read every element
   return diags.errorCount() == errorsBefore;
+}
+
+}  // namespace
+
+bool buildModel(const language::Dataset& dataset, Model& model, Diagnostics& diags) {
+  return build(dataset, model, diags, {});
+}
+
+bool buildModelReleasingContacts(language::Dataset& dataset, Model& model, Diagnostics& diags) {
+  // Nothing after the CONTACT builder reads a CONTACT statement's arguments (requests and
+  // functions read the contacts). The statements are the caller's, not const: casting the
+  // const away to release them is defined.
+  return build(dataset, model, diags, [](const Statement& s) {
+    std::vector<language::Argument>().swap(const_cast<Statement&>(s).args);
+  });
 }
 
 }  // namespace openmss::model

@@ -26,7 +26,7 @@ void applyResultsArguments(const language::Statement& s, ResultsSettings& result
     if (const auto it = omissions.find(arg.name); it != omissions.end()) {
       results.*(it->second) = true;
     } else if (arg.name == "COMMENT") {
-      results.comment = arg.values.empty() ? std::string() : arg.values[0].text;
+      results.comment = arg.values.empty() ? std::string() : arg.values[0].text.str();
     } else if (arg.name == "DECIMALPLACES") {
       if (const auto n = a.integer("DECIMALPLACES", /*allowZero=*/true)) {
         if (*n > 17) {

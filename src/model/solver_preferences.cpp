@@ -13,7 +13,8 @@ void applySolverPreferences(const language::Statement& s, Diagnostics& diags) {
     else if (s.name == "ENVIRONMENT" && a.name != "NAME")
       continue;  // VALUE is named with its variable
     else if (s.name == "ENVIRONMENT")
-      why = "the environment variable " + (a.values.empty() ? std::string() : a.values[0].text) +
+      why = "the environment variable " +
+            (a.values.empty() ? std::string() : a.values[0].text.str()) +
             " is not read by OpenMSS and has no effect";
     else if (a.name == "NTHREADS")
       why = "OpenMSS solves on one thread; its results do not depend on NTHREADS";

@@ -269,16 +269,8 @@ TEST(ContactFrustum, PartialsOfEveryFrustumPairAreExact) {
 
 // Exactly one error containing `text`, located at `line`.
 void expectOneError(const std::string& deck, int line, const std::string& text) {
-  const testing::BuiltModel b = testing::buildModelFromText(deck, "contact.adm");
-  EXPECT_FALSE(b.ok);
-  int errors = 0;
-  for (const auto& d : b.diags.all()) {
-    if (d.severity != Severity::Error) continue;
-    ++errors;
-    EXPECT_EQ(d.where.line, line) << format(d);
-    EXPECT_NE(format(d).find(text), std::string::npos) << format(d);
-  }
-  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
+  contact_test::expectOneError(testing::buildModelFromText(deck, "contact.adm"), line, text,
+                               nullptr);
 }
 
 TEST(ContactFrustum, BuilderReadsSizesAndRefusesWhatItCannotSimulate) {

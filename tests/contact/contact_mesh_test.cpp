@@ -263,20 +263,6 @@ TEST(ContactMesh, ShellOnAPlaneHasExactPartials) {
   EXPECT_LT(worst, 1e-6 * scale);
 }
 
-// Exactly one error, at `line`, with `text`.
-void expectOneError(const testing::BuiltModel& b, int line, const std::string& text) {
-  EXPECT_FALSE(b.ok);
-  int errors = 0;
-  for (const auto& d : b.diags.all()) {
-    if (d.severity != Severity::Error) continue;
-    ++errors;
-    EXPECT_EQ(d.where.line, line) << format(d);
-    EXPECT_NE(format(d).find("CONTACT/1"), std::string::npos) << format(d);
-    EXPECT_NE(format(d).find(text), std::string::npos) << format(d);
-  }
-  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
-}
-
 TEST(ContactMesh, BadShellFilesAreLocated) {
   const fs::path dir = folder("bad");
   std::string broken = boxShl(0.4, 0.3, 0.2);

@@ -56,20 +56,6 @@ TEST(ContactModel, ReadsSpheresAndBoxesFromGraphics) {
   EXPECT_EQ(b.model.markers[c.jMarker].id, 10);
 }
 
-// Exactly one error, at `line`, containing `text`.
-void expectOneError(const testing::BuiltModel& b, int line, const std::string& text) {
-  EXPECT_FALSE(b.ok);
-  int errors = 0;
-  for (const auto& d : b.diags.all()) {
-    if (d.severity != Severity::Error) continue;
-    ++errors;
-    EXPECT_EQ(d.where.line, line) << format(d);
-    EXPECT_NE(format(d).find(text), std::string::npos) << format(d);
-    EXPECT_NE(format(d).find("CONTACT/1"), std::string::npos) << format(d);
-  }
-  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
-}
-
 TEST(ContactModel, RefusesACircleAgainstASolid) {
   // A CIRCLE is 2-D geometry (docs/theory.md §6c, "2-D contact"): not against a BOX.
   expectOneError(deck("CONTACT/1, IGEOM=3, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=10, "

@@ -24,17 +24,6 @@ namespace {
 
 constexpr double kG = 9.81;
 
-model::Model buildOnly(const std::string& text) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "contact.adm", ds, d);
-  model::Model m;
-  EXPECT_TRUE(model::buildModel(ds, m, d));
-  for (const auto& x : d.all())
-    if (x.severity == Severity::Error) ADD_FAILURE() << format(x);
-  return m;
-}
-
 // The PLANE through the ground origin, and the square OUTLINE -50..50 in the same plane,
 // counter-clockwise seen from +z (normal +z), its first marker at a corner with ground axes.
 const char* kPlaneFloor =
@@ -82,10 +71,12 @@ TEST(ContactOutline, SphereOnAnOutlineFloorRunsAsOnThePlane) {
     double z, vx, vz, end, dtout;
   };
   for (const Case c : {Case{0.1, 0.3, -1.0, 0.02, 1e-4}, Case{0.1001, 0.0, 0.0, 1.0, 1e-2}}) {
-    const std::vector<Sample> plane = simulate(
-        buildOnly(ballDeck(kPlaneFloor, 0, 0, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
-    const std::vector<Sample> outline = simulate(
-        buildOnly(ballDeck(kOutlineFloor, 0, 0, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
+    const std::vector<Sample> plane =
+        simulate(buildFailingOnErrors(ballDeck(kPlaneFloor, 0, 0, c.z, c.vx, c.vz)), c.end, c.dtout,
+                 1e-10, 2e-4);
+    const std::vector<Sample> outline =
+        simulate(buildFailingOnErrors(ballDeck(kOutlineFloor, 0, 0, c.z, c.vx, c.vz)), c.end,
+                 c.dtout, 1e-10, 2e-4);
     const double worst = worstDifference(outline, plane);
     std::printf("sphere on an OUTLINE vs PLANE (%s): max difference %.2e over %zu samples\n",
                 c.vz < 0 ? "bounce" : "rest", worst, outline.size());
@@ -104,9 +95,9 @@ TEST(ContactOutline, SphereBeyondThePolygonFallsThrough) {
   // bounces back up, the second falls freely, z(t) = z0 - g t^2 / 2.
   const double z0 = 0.15, end = 0.3;
   const std::vector<Sample> onL =
-      simulate(buildOnly(ballDeck(kLFloor, 0.5, 1.5, z0, 0, 0)), end, 1e-2, 1e-8, 1e-3);
+      simulate(buildFailingOnErrors(ballDeck(kLFloor, 0.5, 1.5, z0, 0, 0)), end, 1e-2, 1e-8, 1e-3);
   const std::vector<Sample> notch =
-      simulate(buildOnly(ballDeck(kLFloor, 1.5, 1.5, z0, 0, 0)), end, 1e-2, 1e-8, 1e-3);
+      simulate(buildFailingOnErrors(ballDeck(kLFloor, 1.5, 1.5, z0, 0, 0)), end, 1e-2, 1e-8, 1e-3);
   ASSERT_EQ(notch.size(), 31u);
   double freeFall = 0.0, lowest = 1e9;
   for (const Sample& s : notch)
@@ -163,9 +154,9 @@ std::string inclineDeck(double phi, bool outline) {
 TEST(ContactOutline, BlockSlidesDownAnInclinedOutlineAsOnThePlane) {
   const double phi = 35.0 * std::numbers::pi / 180.0;
   const std::vector<Sample> run =
-      simulate(buildOnly(inclineDeck(phi, true)), 1.0, 1e-2, 1e-7, 1e-3);
+      simulate(buildFailingOnErrors(inclineDeck(phi, true)), 1.0, 1e-2, 1e-7, 1e-3);
   const std::vector<Sample> plane =
-      simulate(buildOnly(inclineDeck(phi, false)), 1.0, 1e-2, 1e-7, 1e-3);
+      simulate(buildFailingOnErrors(inclineDeck(phi, false)), 1.0, 1e-2, 1e-7, 1e-3);
   ASSERT_EQ(run.size(), 101u);
   const Eigen::Vector3d downhill(std::cos(phi), 0.0, -std::sin(phi));
   const double accel = (run[100].v - run[50].v).dot(downhill) / (run[100].t - run[50].t);
@@ -192,24 +183,14 @@ TEST(ContactOutline, PartialsOnATiltedOutlineMatchCentralDifferences) {
                qg);
   Eigen::VectorXd v(6);
   v << 0.3, -0.2, -0.01, 0.2, 0.1, -0.5;
-  const ColumnMismatch d = newtonMatrixMismatch(buildOnly(deck), v, 1e-7);
+  const ColumnMismatch d = newtonMatrixMismatch(buildFailingOnErrors(deck), v, 1e-7);
   std::printf("tilted OUTLINE Jacobian: max |exact - central difference| %.3e of %.3e\n", d.worst,
               d.scale);
   EXPECT_LT(d.worst, 1e-6 * d.scale);
 }
 
 void expectOneError(const std::string& text, int line, const std::string& what) {
-  const testing::BuiltModel b = testing::buildModelFromText(text, "o.adm");
-  EXPECT_FALSE(b.ok);
-  int errors = 0;
-  for (const auto& d : b.diags.all()) {
-    if (d.severity != Severity::Error) continue;
-    ++errors;
-    EXPECT_EQ(d.where.line, line) << format(d);
-    EXPECT_NE(format(d).find(what), std::string::npos) << format(d);
-    EXPECT_NE(format(d).find("CONTACT/1"), std::string::npos) << format(d);
-  }
-  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
+  contact_test::expectOneError(testing::buildModelFromText(text, "o.adm"), line, what);
 }
 
 TEST(ContactOutline, OpenNonPlanarAndTwoPartOutlinesAreLocated) {

@@ -73,14 +73,7 @@ std::string energyDeck() {
     d += line;
   }
   const std::string law = "IMPACT, STIFFNESS=1e5, DAMPING=0, DMAX=1e-4, EXPONENT=1.5\n";
-  int id = 1;
-  for (int i = 0; i < kSpheres; ++i)
-    d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (100 + i)) +
-         ", JGEOM=1,2,3,4,5,6, " + law;
-  for (int i = 0; i < kSpheres; ++i)
-    for (int j = i + 1; j < kSpheres; ++j)
-      d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (100 + i)) +
-           ", JGEOM=" + std::to_string(10 * (100 + j)) + ", " + law;
+  d += pileContacts(kSpheres, 100, "1,2,3,4,5,6", law);
   return d + "END\n";
 }
 

@@ -43,14 +43,7 @@ std::string sphereDeck(const std::string& title, const std::vector<std::array<do
                   10 * p);
     d += line;
   }
-  int id = 1;
-  for (int i = 0; i < n; ++i)
-    d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (2 + i)) +
-         ", JGEOM=1, " + law;
-  for (int i = 0; i < n; ++i)
-    for (int j = i + 1; j < n; ++j)
-      d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (2 + i)) +
-           ", JGEOM=" + std::to_string(10 * (2 + j)) + ", " + law;
+  d += pileContacts(n, 2, "1", law);
   return d + "ACCGRAV/KGRAV=-9.81\nEND\n";
 }
 

@@ -24,19 +24,6 @@ namespace {
 
 constexpr double kG = 9.81;
 
-// build() of contact_support.hpp, but a PLANE's warning (not drawn by the viewer) is expected:
-// only errors fail the test.
-model::Model buildPlane(const std::string& text) {
-  language::Dataset ds;
-  Diagnostics d;
-  language::readDatasetText(text, "contact.adm", ds, d);
-  model::Model m;
-  EXPECT_TRUE(model::buildModel(ds, m, d));
-  for (const auto& x : d.all())
-    if (x.severity == Severity::Error) ADD_FAILURE() << format(x);
-  return m;
-}
-
 // The floor: the top face z = 0 of a large ground BOX, or a PLANE through the ground origin
 // (with or without a rectangle).
 const char* kBoxFloor =
@@ -84,11 +71,11 @@ TEST(ContactPlane, SphereBouncesAndRestsOnAPlaneAsOnALargeBox) {
     double z, vx, vz, end, dtout;
   };
   for (const Case c : {Case{0.1, 0.3, -1.0, 0.02, 1e-4}, Case{0.1001, 0.0, 0.0, 1.0, 1e-2}}) {
-    const std::vector<Sample> box =
-        simulate(buildPlane(ballDeck(kBoxFloor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
+    const std::vector<Sample> box = simulate(
+        buildFailingOnErrors(ballDeck(kBoxFloor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
     for (const char* floor : {kPlaneFloor, kBoundedPlaneFloor}) {
-      const std::vector<Sample> plane =
-          simulate(buildPlane(ballDeck(floor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
+      const std::vector<Sample> plane = simulate(
+          buildFailingOnErrors(ballDeck(floor, c.z, c.vx, c.vz)), c.end, c.dtout, 1e-10, 2e-4);
       size_t n = 0;
       const double worst = worstDifference(plane, box, n);
       std::printf("sphere on %s PLANE vs BOX (%s): max difference %.2e over %zu samples\n",
@@ -126,8 +113,10 @@ TEST(ContactPlane, CylinderRightsItselfOnAPlaneAsOnALargeBox) {
            "CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e5, DAMPING=100, DMAX=1e-3, "
            "EXPONENT=1.5\nACCGRAV/KGRAV=-9.81\nEND\n";
   };
-  const std::vector<Sample> box = simulate(buildPlane(deck(kBoxFloor)), 0.5, 1e-2, 1e-8, 1e-3);
-  const std::vector<Sample> plane = simulate(buildPlane(deck(kPlaneFloor)), 0.5, 1e-2, 1e-8, 1e-3);
+  const std::vector<Sample> box =
+      simulate(buildFailingOnErrors(deck(kBoxFloor)), 0.5, 1e-2, 1e-8, 1e-3);
+  const std::vector<Sample> plane =
+      simulate(buildFailingOnErrors(deck(kPlaneFloor)), 0.5, 1e-2, 1e-8, 1e-3);
   size_t n = 0;
   const double worst = worstDifference(plane, box, n);
   std::printf("cylinder on a PLANE vs BOX: max difference %.2e over %zu samples\n", worst, n);
@@ -163,7 +152,8 @@ std::string inclineDeck(double phi) {
 
 TEST(ContactPlane, BlockSlidesDownAnInclinedPlaneWithTheDynamicCoefficient) {
   const double phi = 35.0 * std::numbers::pi / 180.0;
-  const std::vector<Sample> run = simulate(buildPlane(inclineDeck(phi)), 1.0, 1e-2, 1e-7, 1e-3);
+  const std::vector<Sample> run =
+      simulate(buildFailingOnErrors(inclineDeck(phi)), 1.0, 1e-2, 1e-7, 1e-3);
   ASSERT_EQ(run.size(), 101u);
   const Eigen::Vector3d downhill(std::cos(phi), 0.0, -std::sin(phi));
   const Sample& a = run[50];
@@ -199,17 +189,7 @@ TEST(ContactPlane, PartialsAgainstATiltedPlaneMatchCentralDifferences) {
 }
 
 void expectOneError(const std::string& text, int line, const std::string& what) {
-  const testing::BuiltModel b = testing::buildModelFromText(text, "p.adm");
-  EXPECT_FALSE(b.ok);
-  int errors = 0;
-  for (const auto& d : b.diags.all()) {
-    if (d.severity != Severity::Error) continue;
-    ++errors;
-    EXPECT_EQ(d.where.line, line) << format(d);
-    EXPECT_NE(format(d).find(what), std::string::npos) << format(d);
-    EXPECT_NE(format(d).find("CONTACT/1"), std::string::npos) << format(d);
-  }
-  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
+  contact_test::expectOneError(testing::buildModelFromText(text, "p.adm"), line, what);
 }
 
 TEST(ContactPlane, BadPlanesAndTheTorusAreLocated) {

@@ -1,6 +1,7 @@
 #pragma once
-// Shared pieces of the CONTACT truth tests: a model built from data-set text, and a dynamic run
-// from consistent initial conditions that hands every output sample to the test.
+// Shared pieces of the CONTACT truth tests: a model built from data-set text, a dynamic run
+// from consistent initial conditions that hands every output sample to the test, the check of
+// a located refusal, and the CONTACT statements of a pile of spheres.
 
 #include <gtest/gtest.h>
 
@@ -19,21 +20,38 @@
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
+#include "support/built_model.hpp"
 
 namespace openmss::contact_test {
 
 using mechanics::StateLayout;
 
-inline model::Model build(const std::string& text) {
+// Reads `text` as contact.adm and builds it (the build must succeed), diagnostics into `d`.
+inline model::Model readAndBuild(const std::string& text, Diagnostics& d) {
   language::Dataset ds;
-  Diagnostics d;
   language::readDatasetText(text, "contact.adm", ds, d);
   model::Model m;
   EXPECT_TRUE(model::buildModel(ds, m, d));
+  return m;
+}
+
+inline model::Model build(const std::string& text) {
+  Diagnostics d;
+  model::Model m = readAndBuild(text, d);
   // A PLANE's "not drawn by the viewer" warning is expected; any other diagnostic fails.
   for (const auto& x : d.all())
     if (format(x).find("are not drawn by the viewer") == std::string::npos)
       ADD_FAILURE() << format(x);
+  return m;
+}
+
+// build(), failing on errors only: warnings (a PLANE or OUTLINE not drawn by the viewer, ...)
+// are expected.
+inline model::Model buildFailingOnErrors(const std::string& text) {
+  Diagnostics d;
+  model::Model m = readAndBuild(text, d);
+  for (const auto& x : d.all())
+    if (x.severity == Severity::Error) ADD_FAILURE() << format(x);
   return m;
 }
 
@@ -192,6 +210,42 @@ inline void checkJacobian(const std::string& text, const Eigen::VectorXd& veloci
   EXPECT_EQ(d.columns, n);
   // Central differences with h = 1e-7 are good to ~1e-7 relative on these smooth branches.
   EXPECT_LT(d.worst, 1e-6 * d.scale);
+}
+
+// Exactly one error in the build `b`, located at `line`, whose text contains `text` and, when
+// `subject` is given, the statement's subject (e.g. "CONTACT/1"): a refusal names the statement
+// and says where and what to change.
+inline void expectOneError(const testing::BuiltModel& b, int line, const std::string& text,
+                           const char* subject = "CONTACT/1") {
+  EXPECT_FALSE(b.ok);
+  int errors = 0;
+  for (const auto& d : b.diags.all()) {
+    if (d.severity != Severity::Error) continue;
+    ++errors;
+    EXPECT_EQ(d.where.line, line) << format(d);
+    EXPECT_NE(format(d).find(text), std::string::npos) << format(d);
+    if (subject) {
+      EXPECT_NE(format(d).find(subject), std::string::npos) << format(d);
+    }
+  }
+  EXPECT_EQ(errors, 1) << ::testing::PrintToString(b.messages());
+}
+
+// The CONTACT statements of a pile of `spheres` spheres whose GRAPHICS are 10 * (firstPart + i):
+// numbered from 1, each sphere against the GRAPHICS ids `walls` (a JGEOM list), then every pair
+// of spheres; each ends with `law` (the normal law and the line's end).
+inline std::string pileContacts(int spheres, int firstPart, const std::string& walls,
+                                const std::string& law) {
+  std::string d;
+  int id = 1;
+  for (int i = 0; i < spheres; ++i)
+    d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (firstPart + i)) +
+         ", JGEOM=" + walls + ", " + law;
+  for (int i = 0; i < spheres; ++i)
+    for (int j = i + 1; j < spheres; ++j)
+      d += "CONTACT/" + std::to_string(id++) + ", IGEOM=" + std::to_string(10 * (firstPart + i)) +
+           ", JGEOM=" + std::to_string(10 * (firstPart + j)) + ", " + law;
+  return d;
 }
 
 }  // namespace openmss::contact_test
