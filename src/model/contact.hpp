@@ -33,7 +33,7 @@ struct ContactSolid {
     // marker's axes (narrow phase: FCL, or analytic against a PLANE; theory §6c, "FCL").
     Ellipsoid,
     // TORUS: centre circle of radius MAJOR_RADIUS in the CM marker's xy-plane, tube radius
-    // MINOR_RADIUS (analytic against a PLANE or a sphere only).
+    // MINOR_RADIUS (analytic against a PLANE, a sphere, a BOX, a mesh or a TORUS only).
     Torus,
     // EXTERNAL shell (.shl or .stl) read into `mesh`, in the RM marker's axes.
     Mesh,

@@ -374,9 +374,17 @@ void rejectUnsupported(StatementArguments& a) {
     a.unsupported(*a.find("TYPE"), "Only TYPE = SOLID_TO_SOLID is supported.");
 }
 
+// The GRAPHICS kind a torus is refused against, with its article, for the message.
+std::string shapeName(ContactSolid::Shape s) {
+  using S = ContactSolid::Shape;
+  if (s == S::Frustum) return "a CYLINDER or FRUSTUM";
+  if (s == S::Ellipsoid) return "an ELLIPSOID of unequal scales";
+  return "a 2-D geometry";
+}
+
 // Every I solid against every J solid must be a pair the narrow phase covers (theory §6c):
-// not two PLANE solids, and a TORUS only against a PLANE or a sphere; one located message per
-// pair.
+// not two PLANE solids, and a TORUS only against a PLANE, a sphere, a BOX, a mesh or a TORUS;
+// one located message per pair.
 bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
   using S = ContactSolid::Shape;
   bool ok = true;
@@ -394,12 +402,15 @@ bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
       const bool torusA = a.shape == S::Torus, torusB = b.shape == S::Torus;
       if (!torusA && !torusB) continue;
       const ContactSolid& other = torusA ? b : a;
-      if (other.shape == S::Plane || other.shape == S::Sphere) continue;
+      if (other.shape == S::Plane || other.shape == S::Sphere || other.shape == S::Box ||
+          other.shape == S::Mesh || other.shape == S::Torus)
+        continue;
       diags.error(s.where, s.subject(),
                   pair +
-                      ": a TORUS is in contact with a PLANE or a sphere (ELLIPSOID of equal "
-                      "scales) only",
-                  "Model the other solid as a PLANE or a sphere, or the ring as an EXTERNAL "
+                      ": a TORUS is in contact with a PLANE, a sphere (ELLIPSOID of equal "
+                      "scales), a BOX, an EXTERNAL shell or a TORUS only, not with " +
+                      shapeName(other.shape) + " (no analytic closest points for that pair)",
+                  "Model the other solid as a PLANE, a sphere, a BOX, a TORUS or an EXTERNAL "
                   "shell (.shl, .stl).");
       ok = false;
     }

@@ -6,6 +6,8 @@
 // - torus against a PLANE: its centre circle as a rim sampled against the half-space lowered
 //   by the tube radius (rimSamplesInHalfSpace), each sample's point moved onto the tube;
 // - torus against a sphere: the centre-circle point nearest the sphere's centre (exact);
+// - torus against a BOX or a mesh: torus_narrow_phase.hpp; two tori:
+//   torus_pair_narrow_phase.hpp;
 // - mesh against a PLANE: its vertices below the plane (as a BOX's, verticesBelowPlane).
 // Every other pair with an ellipsoid or a mesh, and two frustums steeper than 5 degrees, go to
 // FCL (fcl_narrow_phase.hpp).
@@ -17,6 +19,8 @@
 #include "mechanics/contact/fcl_narrow_phase.hpp"
 #include "mechanics/contact/frustum_narrow_phase.hpp"
 #include "mechanics/contact/plane_narrow_phase.hpp"
+#include "mechanics/contact/torus_narrow_phase.hpp"
+#include "mechanics/contact/torus_pair_narrow_phase.hpp"
 
 namespace openmss::mechanics::contact {
 
@@ -121,10 +125,15 @@ void curvedNarrowPhase(const model::ContactSolid& si, const SolidFrame<T>& fi,
     return;
   }
   if (si.shape == S::Torus || sj.shape == S::Torus) {
-    // The builder lets a torus meet a plane or a sphere only.
+    // The builder lets a torus meet a plane, a sphere, a box, a mesh or a torus only.
     const bool torusOnI = si.shape == S::Torus;
+    const model::ContactSolid &t = torusOnI ? si : sj, &o = torusOnI ? sj : si;
+    const SolidFrame<T>&ft = torusOnI ? fi : fj, &fo = torusOnI ? fj : fi;
+    if (o.shape == S::Box) return torusBox(t, ft, o, fo, torusOnI, out);
+    if (o.shape == S::Mesh) return torusMesh(t, ft, o, fo, torusOnI, out);
+    if (o.shape == S::Torus) return torusTorus(si, fi, sj, fj, out);
     ContactPoint<T> cp;
-    if (torusOnI ? torusSphere(si, fi, sj, fj, cp) : torusSphere(sj, fj, si, fi, cp)) {
+    if (torusSphere(t, ft, o, fo, cp)) {
       if (torusOnI) cp.normal = -cp.normal;
       out.push_back(cp);
     }
