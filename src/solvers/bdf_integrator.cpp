@@ -174,6 +174,22 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   velocityRejected_ = false;
 }
 
+void BdfIntegrator::restart(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+  // The factors were formed with the row and column scaling of their cj (refresh()), which
+  // start() resets: kept with them. The first attempt from here uses them like any older
+  // matrix: the cj drift test, a corrector failure on attempt 0 and the slow-convergence
+  // refresh form a new one when it no longer serves.
+  const bool keep = haveJacobian_ && y0.size() == y_.size();
+  Eigen::VectorXd rowScale = rowScale_, colScale = colScale_;
+  const double cj = cjJacobian_;
+  start(t0, y0, yp0);
+  if (!keep) return;
+  rowScale_ = std::move(rowScale);
+  colScale_ = std::move(colScale);
+  cjJacobian_ = cj;
+  haveJacobian_ = true;
+}
+
 double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w) {
   // The maximum (not a root-mean-square) so that one coordinate's error is not diluted by the
   // many that are at rest. PropagateNaN: a NaN anywhere fails the test (a plain maximum would
@@ -303,6 +319,9 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
       sparseSolver_.factor(sparseJac_);
+      stats_.sparseAnalyses = sparseSolver_.analyses();
+      stats_.fullFactorizations = sparseSolver_.fullFactorizations();
+      stats_.refactorizations = sparseSolver_.refactorizations();
     } else {
       problem_.newtonMatrix(tNew, yPred_, ypNew_, cj, jac_);
       jac_.array().colwise() *= rowScale_.array();

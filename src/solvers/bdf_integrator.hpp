@@ -29,6 +29,8 @@ class BdfIntegrator final : public Integrator {
   BdfIntegrator(DaeProblem& problem, const MultistepSettings& settings);
 
   void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
+  // Keeps the Newton matrix, its factors and its scaling (docs/integrators.md, "Restarts").
+  void restart(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
   bool step(double tout) override;
   bool setNextStepSize(double h) override {  // SENSOR/STEPSIZE
     h_ = h;
