@@ -44,6 +44,10 @@ class PresentedIntegrator final : public solvers::Integrator {
     begin(t0, y0, yp0, true);
   }
 
+  // SENSOR/STEPSIZE and a CONTACT onset's restart set the inner method's next step: the SI2
+  // padding and the interpolation change what is reported, not how the method steps.
+  bool setNextStepSize(double h) override { return inner_->setNextStepSize(h); }
+
   bool step(double tout) override {
     const double eps = 1e-12 * std::max(1.0, std::abs(tout));
     if (!interpolate_) {
