@@ -82,6 +82,13 @@ class PresentedIntegrator final : public solvers::Integrator {
     y = work_.head(n_);
     yp = workp_.head(n_);
   }
+  void interpolateComponents(double s, const std::vector<int>& components,
+                             Eigen::VectorXd& y) const override {
+    if (work_.size() == 0) work_ = inner_->y();
+    inner_->interpolateComponents(s, components, work_);
+    if (y.size() != n_) y = inner_->y().head(n_);
+    for (const int i : components) y(i) = work_(i);
+  }
   const solvers::IntegratorStatistics& statistics() const override { return inner_->statistics(); }
   std::vector<std::string> warnings() const override { return inner_->warnings(); }
   const solvers::IntegratorFailure& failure() const override {

@@ -715,4 +715,36 @@ void BdfIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
   if (x != s) y = ys_[static_cast<size_t>(std::find(nodes, nodes + n, s) - nodes)];
 }
 
+// interpolate()'s y component by component: the same operations in the same order on each
+// entry (the build does not contract a*b+c, CMakeLists.txt), so the same bits.
+void BdfIntegrator::interpolateComponents(double s, const std::vector<int>& components,
+                                          Eigen::VectorXd& y) const {
+  if (y.size() != y_.size()) y = y_;
+  const int n = std::min(lastStepOrder_ + 1, static_cast<int>(ts_.size()));
+  if (n < 2) {
+    for (const int i : components) y(i) = y_(i) + (s - t_) * yp_(i);
+    return;
+  }
+  double nodes[8] = {}, w[8], dw[8];
+  for (int j = 0; j < n; ++j) nodes[j] = ts_[j];
+  if (s == nodes[0]) {
+    for (const int i : components) y(i) = y_(i);
+    return;
+  }
+  double x = s;
+  for (int j = 1; j < n; ++j)
+    if (x == nodes[j]) x = nodes[j] + 1e-9 * (nodes[0] - nodes[j]);
+  if (x != s) {
+    const Eigen::VectorXd& at = ys_[static_cast<size_t>(std::find(nodes, nodes + n, s) - nodes)];
+    for (const int i : components) y(i) = at(i);
+    return;
+  }
+  lagrangeAt(nodes, n, x, w, dw);
+  for (const int i : components) {
+    double v = 0.0;
+    for (int j = 0; j < n; ++j) v += w[j] * ys_[static_cast<size_t>(j)](i);
+    y(i) = v;
+  }
+}
+
 }  // namespace openmss::solvers

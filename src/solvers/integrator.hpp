@@ -99,6 +99,17 @@ class Integrator {
   virtual double previousTime() const = 0;
   // The method's own interpolant at time s in [previousTime(), t()].
   virtual void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const = 0;
+  // interpolate()'s y at the listed components only, to the bit, written into y (sized as the
+  // state; the other entries are left as they are). The contact event locator bisects on the
+  // few bodies of one contact (docs/performance.md, "Contact pile"). The default interpolates
+  // everything.
+  virtual void interpolateComponents(double s, const std::vector<int>& components,
+                                     Eigen::VectorXd& y) const {
+    Eigen::VectorXd all, allp;
+    interpolate(s, all, allp);
+    if (y.size() != all.size()) y = all;
+    for (const int i : components) y(i) = all(i);
+  }
 
   virtual const IntegratorStatistics& statistics() const = 0;
   virtual const IntegratorFailure& failure() const = 0;
