@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <iterator>
 
 #include "mechanics/contact/contact_loads.hpp"
 #include "mechanics/initial_conditions.hpp"
@@ -48,13 +49,39 @@ ContactEventIntegrator::ContactEventIntegrator(solvers::Integrator& inner,
       restartAtOnset_(restartAtOnset),
       broad_(system.model(), system.layout()) {}
 
-std::vector<bool> ContactEventIntegrator::touching(const Eigen::VectorXd& y) {
+std::vector<int> ContactEventIntegrator::touching(const Eigen::VectorXd& y) {
   const auto& contacts = system_.model().contacts;
-  std::vector<bool> out(contacts.size(), false);
+  std::vector<int> out;
   mechanics::contact::ContactKinematics<double> kin(system_.model(), system_.layout(), y.data(),
                                                     &broad_.slots());
-  for (const int k : broad_.near(y.data())) out[k] = touches(system_, contacts[k], kin);
+  for (const int k : broad_.near(y.data()))
+    if (touches(system_, contacts[k], kin)) out.push_back(k);
   return out;
+}
+
+const std::vector<int>& ContactEventIntegrator::componentsRead(int k) {
+  const model::Model& m = system_.model();
+  const model::Contact& c = m.contacts[static_cast<size_t>(k)];
+  components_.clear();
+  if (c.normalRoutine || c.frictionRoutine) return components_;
+  std::vector<int> bodies;
+  auto take = [&](int marker) {
+    if (marker < 0) return;
+    const int b = m.parts[m.markers[marker].part].body;
+    if (b >= 0) bodies.push_back(b);
+  };
+  take(c.iMarker);
+  take(c.jMarker);
+  for (const model::ContactSolid& s : c.iSolids) take(s.marker);
+  for (const model::ContactSolid& s : c.jSolids) take(s.marker);
+  std::sort(bodies.begin(), bodies.end());
+  bodies.erase(std::unique(bodies.begin(), bodies.end()), bodies.end());
+  // A contact between two ground solids reads no state; one entry keeps the list non-empty.
+  if (bodies.empty()) components_.push_back(0);
+  for (const int b : bodies)
+    for (int i = 0; i < mechanics::StateLayout::kPerBody; ++i)
+      components_.push_back(system_.layout().body(b) + i);
+  return components_;
 }
 
 void ContactEventIntegrator::start(double t0, const Eigen::VectorXd& y0,
@@ -72,26 +99,49 @@ bool ContactEventIntegrator::step(double tout) {
   if (!inner_.step(tout)) return false;
   if (!active()) return true;
   const double b = inner_.t();
-  const std::vector<bool> now = touching(inner_.y());
+  const std::vector<int> now = touching(inner_.y());
   if (now == state_) return true;
+  // The contacts that changed, ascending (the two lists are).
+  std::vector<int> changed;
+  std::set_symmetric_difference(state_.begin(), state_.end(), now.begin(), now.end(),
+                                std::back_inserter(changed));
   // Each change located by bisection on the interpolant: lo keeps the old state, hi the new,
-  // until the bracket is 1e-10 of the step (or at rounding); the event time is hi.
+  // until the bracket is 1e-10 of the step (or at rounding); the event time is hi. Only the
+  // entries the contact reads are interpolated (the same bits as the whole state's).
   const auto& contacts = system_.model().contacts;
   std::vector<ContactEvent> found;
-  Eigen::VectorXd y, yp;
+  std::vector<int> foundIndex;
+  Eigen::VectorXd y = inner_.y(), yp;
   const double tol = std::max(1e-10 * (b - a), 4e-16 * std::max(1.0, std::abs(b)));
-  for (size_t k = 0; k < contacts.size(); ++k) {
-    if (now[k] == state_[k]) continue;
+  for (const int k : changed) {
+    const bool before = std::binary_search(state_.begin(), state_.end(), k);
+    const std::vector<int>& read = componentsRead(k);
     double lo = a, hi = b;
     for (int it = 0; it < 200 && hi - lo > tol; ++it) {
       const double mid = 0.5 * (lo + hi);
-      inner_.interpolate(mid, y, yp);
-      (touches(system_, contacts[k], y) == state_[k] ? lo : hi) = mid;
+      if (read.empty())
+        inner_.interpolate(mid, y, yp);
+      else
+        inner_.interpolateComponents(mid, read, y);
+      (touches(system_, contacts[k], y) == before ? lo : hi) = mid;
     }
-    found.push_back({hi, contacts[k].id, static_cast<bool>(now[k])});
+    found.push_back({hi, contacts[k].id, !before});
+    foundIndex.push_back(k);
   }
-  std::stable_sort(found.begin(), found.end(),
-                   [](const ContactEvent& x, const ContactEvent& z) { return x.time < z.time; });
+  {  // sorted by time, stably (ties keep the ascending element order); foundIndex alongside
+    std::vector<size_t> order(found.size());
+    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(),
+                     [&](size_t x, size_t z) { return found[x].time < found[z].time; });
+    std::vector<ContactEvent> f;
+    std::vector<int> fi;
+    for (const size_t i : order) {
+      f.push_back(found[i]);
+      fi.push_back(foundIndex[i]);
+    }
+    found = std::move(f);
+    foundIndex = std::move(fi);
+  }
   // The step is cut back to its first onset, so that no step's history (the solutions before
   // its start the multistep method interpolates) lies before an onset and its end after it.
   // A step from a (re)start has no such history (order 1 from one consistent state, under the
@@ -110,16 +160,27 @@ bool ContactEventIntegrator::step(double tout) {
     // Cut the step back to that onset: the events after it are found again from there.
     inner_.interpolate(restartAt, y, yp);
     makeConsistent(system_, restartAt, y, yp);
-    inner_.start(restartAt, y, yp);
+    // The method keeps its Newton matrix: the new contact's IMPACT stiffness is zero at the
+    // onset (k delta^e, e > 1), so the matrix of the step just taken is nearly exact for it,
+    // and forming and factorising a new one at every onset was one full factorisation per step
+    // of a landing pile (docs/performance.md, "Contact pile").
+    inner_.restart(restartAt, y, yp);
     fromStart_ = true;
     // The restart's first step is the one the error control had just accepted (b - a), not
     // HINIT: HINIT is the size for a run's start, often far longer than the steps an impact
     // allows, and cost a corrector failure and error-test rejections at every restart.
     inner_.setNextStepSize(b - a);
-    std::vector<bool> at = touching(inner_.y());
-    for (size_t k = 0; k < contacts.size(); ++k)
-      for (const ContactEvent& e : found)
-        if (e.contactId == contacts[k].id && e.time <= restartAt) at[k] = e.onset;
+    // The located events up to the restart set those contacts' state (the projection may
+    // have moved a touch by a rounding); the rest is the state at the restart.
+    std::vector<int> at = touching(inner_.y());
+    for (size_t i = 0; i < found.size(); ++i) {
+      if (found[i].time > restartAt) continue;
+      const int k = foundIndex[i];
+      const auto it = std::lower_bound(at.begin(), at.end(), k);
+      const bool in = it != at.end() && *it == k;
+      if (found[i].onset && !in) at.insert(it, k);
+      if (!found[i].onset && in) at.erase(it);
+    }
     state_ = at;
     for (const ContactEvent& e : found)
       if (e.time <= restartAt) events_.push_back(e);

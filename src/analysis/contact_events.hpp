@@ -49,9 +49,14 @@ class ContactEventIntegrator final : public solvers::Integrator {
   static std::string describe(const ContactEvent& e);
 
  private:
-  // Which contacts touch (any contact point) in state y: the narrow phase of the elements the
-  // broad phase finds near (the others have no point: contactLoads makes the same test).
-  std::vector<bool> touching(const Eigen::VectorXd& y);
+  // Which contacts touch (any contact point) in state y, ascending: the narrow phase of the
+  // elements the broad phase finds near (the others have no point: contactLoads makes the same
+  // test). Lists, not one flag per element: a pile of N spheres has N² / 2 elements, and a
+  // step's work stays with the near ones (docs/performance.md, "Contact pile").
+  std::vector<int> touching(const Eigen::VectorXd& y);
+  // The state components contact k reads (its bodies' entries), or empty when it may read more
+  // (a user law): the bisection then interpolates the whole state.
+  const std::vector<int>& componentsRead(int k);
 
   solvers::Integrator& inner_;
   const mechanics::MultibodySystem& system_;
@@ -59,8 +64,9 @@ class ContactEventIntegrator final : public solvers::Integrator {
   // The broad phase of touching() (docs/theory.md §6c), with the bodies and markers the
   // contacts read: touching() computes each state once per call.
   mechanics::contact::ContactBroadPhase broad_;
-  std::vector<bool> state_;  // at inner_.t()
-  bool fromStart_ = true;    // the next step is the first from a (re)start
+  std::vector<int> state_;  // the touching contacts at inner_.t(), ascending
+  std::vector<int> components_;
+  bool fromStart_ = true;  // the next step is the first from a (re)start
   std::vector<ContactEvent> events_;
 };
 

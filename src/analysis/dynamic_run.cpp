@@ -7,13 +7,13 @@
 #include <cstdio>
 #include <memory>
 
+#include "analysis/contact_events.hpp"
 #include "analysis/discrete_sampler.hpp"
 #include "analysis/eprint_log.hpp"
 #include "analysis/integration_failure.hpp"
 #include "analysis/integrator_factory.hpp"
 #include "analysis/multibody_dae.hpp"
 #include "analysis/run_state_integrator.hpp"
-#include "analysis/contact_events.hpp"
 #include "analysis/sensor_monitor.hpp"
 #include "analysis/transient_run.hpp"
 #include "mechanics/initial_conditions.hpp"
@@ -37,6 +37,12 @@ void writeStatistics(const AnalysisContext& run, const solvers::IntegratorStatis
                   std::to_string(st.newtonFailures) + " corrector failures, " +
                   std::to_string(st.jacobianEvaluations) + " Jacobian evaluations, " +
                   std::to_string(st.residualEvaluations) + " residual evaluations");
+  // The sparse Newton matrices' cost drivers (docs/performance.md, "Contact pile").
+  if (st.fullFactorizations + st.refactorizations > 0)
+    run.report.line("   Sparse Newton matrices: " + std::to_string(st.sparseAnalyses) +
+                    " pattern analyses, " + std::to_string(st.fullFactorizations) +
+                    " full factorisations, " + std::to_string(st.refactorizations) +
+                    " refactorisations");
 }
 
 // HSIZE, ORDER, NJAC, NRHS read by REQUEST functions: the numbers the .msg prints.
@@ -78,8 +84,7 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
     for (; warningsShown < lines.size(); ++warningsShown)
       run.warning(nullptr, lines[warningsShown]);
     // Contact onsets and separations, with DEBUG/EPRINT (theory §6c, "Events").
-    for (; m.debug.eprint && contactLinesShown < contactEvents.events().size();
-         ++contactLinesShown)
+    for (; m.debug.eprint && contactLinesShown < contactEvents.events().size(); ++contactLinesShown)
       run.report.line(ContactEventIntegrator::describe(contactEvents.events()[contactLinesShown]));
   };
   EprintLog eprint(run.report, dae);           // DEBUG/EPRINT: per step and iteration, to the .msg
@@ -112,13 +117,14 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
     if (!ok) {
       // Name the request file only when one was written (OUTPUT/REQSAVE and at least one
       // output step).
-      const std::string where = run.report.requestsWritten()
-                                    ? "Outputs up to the last successful output step are in " +
-                                          s.outputPrefix + ".req. "
-                                    : "";
+      const std::string where =
+          run.report.requestsWritten()
+              ? "Outputs up to the last successful output step are in " + s.outputPrefix + ".req. "
+              : "";
       run.error(nullptr, describeIntegrationFailure(m, run.system, dae, integrator),
-                where + "Look for a discontinuous force or motion near that time, or tighten "
-                        "HMAX.");
+                where +
+                    "Look for a discontinuous force or motion near that time, or tighten "
+                    "HMAX.");
       s.t = integrator.t();
       s.summary.time = s.t;
       return false;

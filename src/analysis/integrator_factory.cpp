@@ -38,15 +38,15 @@ class PresentedIntegrator final : public solvers::Integrator {
   }
 
   void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override {
-    const int m = owned_ ? owned_->size() : n_;
-    Eigen::VectorXd y = Eigen::VectorXd::Zero(m), yp = Eigen::VectorXd::Zero(m);
-    y.head(n_) = y0;
-    yp.head(n_) = yp0;
-    inner_->start(t0, y, yp);
-    t_ = tPrevious_ = t0;
-    y_ = y0;
-    yp_ = yp0;
+    begin(t0, y0, yp0, false);
   }
+  void restart(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override {
+    begin(t0, y0, yp0, true);
+  }
+
+  // SENSOR/STEPSIZE and a CONTACT onset's restart set the inner method's next step: the SI2
+  // padding and the interpolation change what is reported, not how the method steps.
+  bool setNextStepSize(double h) override { return inner_->setNextStepSize(h); }
 
   bool step(double tout) override {
     const double eps = 1e-12 * std::max(1.0, std::abs(tout));
@@ -82,9 +82,14 @@ class PresentedIntegrator final : public solvers::Integrator {
     y = work_.head(n_);
     yp = workp_.head(n_);
   }
-  const solvers::IntegratorStatistics& statistics() const override {
-    return inner_->statistics();
+  void interpolateComponents(double s, const std::vector<int>& components,
+                             Eigen::VectorXd& y) const override {
+    if (work_.size() == 0) work_ = inner_->y();
+    inner_->interpolateComponents(s, components, work_);
+    if (y.size() != n_) y = inner_->y().head(n_);
+    for (const int i : components) y(i) = work_(i);
   }
+  const solvers::IntegratorStatistics& statistics() const override { return inner_->statistics(); }
   std::vector<std::string> warnings() const override { return inner_->warnings(); }
   const solvers::IntegratorFailure& failure() const override {
     failure_ = inner_->failure();
@@ -94,6 +99,20 @@ class PresentedIntegrator final : public solvers::Integrator {
   }
 
  private:
+  // start() or restart() of the inner method on the I3 state padded with the SI2 extras (zero).
+  void begin(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0, bool restart) {
+    const int m = owned_ ? owned_->size() : n_;
+    Eigen::VectorXd y = Eigen::VectorXd::Zero(m), yp = Eigen::VectorXd::Zero(m);
+    y.head(n_) = y0;
+    yp.head(n_) = yp0;
+    if (restart)
+      inner_->restart(t0, y, yp);
+    else
+      inner_->start(t0, y, yp);
+    t_ = tPrevious_ = t0;
+    y_ = y0;
+    yp_ = yp0;
+  }
   // An SI2 velocity row or stabilising multiplier is reported as its constraint's I3 row.
   int mapped(int i) const {
     const int extra = (owned_ ? owned_->size() : n_) - n_;
@@ -148,17 +167,18 @@ std::optional<std::string> integratorUnavailable(const model::IntegratorSettings
   }
   if (s.formulation == IntegratorFormulation::Si2 && !isBdfFamily(s.type) &&
       s.type != IntegratorType::Dstiff)
-    return std::string("the SI2 formulation is implemented for GSTIFF, WSTIFF and DSTIFF only, "
-                       "not ") +
+    return std::string(
+               "the SI2 formulation is implemented for GSTIFF, WSTIFF and DSTIFF only, "
+               "not ") +
            model::integratorTypeName(s.type) + "; use I3";
   if (s.formulation == IntegratorFormulation::Si1)
     return std::string("the SI1 formulation is not implemented; use I3 or SI2");
   if (s.type == IntegratorType::Dstiff && s.kmax && *s.kmax > 5)
     return std::string("DSTIFF's highest order is 5; write KMAX=5 or less");
-  if (s.type != IntegratorType::Abam && s.type != IntegratorType::Merson && s.kmax &&
-      *s.kmax > 6)
-    return std::string("the BDF integrators' highest order is 6 (KMAX up to 12 is for ABAM); "
-                       "write KMAX=6 or less");
+  if (s.type != IntegratorType::Abam && s.type != IntegratorType::Merson && s.kmax && *s.kmax > 6)
+    return std::string(
+        "the BDF integrators' highest order is 6 (KMAX up to 12 is for ABAM); "
+        "write KMAX=6 or less");
   return std::nullopt;
 }
 
@@ -177,9 +197,10 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
   // MERSON (its steps land on the output times; docs/integrators.md, "MERSON").
   const bool dstiff = s.type == IntegratorType::Dstiff || s.type == IntegratorType::Abam ||
                       s.type == IntegratorType::Merson;
-  // ADAMS's defaults (docs/integrators.md, "Defaults"): HMAX is the output step (GSTIFF; HHT and NEWMARK alike), unlimited for
-  // DSTIFF; HINIT half the output step for GSTIFF, a twentieth for DSTIFF (and for HHT, as
-  // ADAMS's HHT logs show); HMIN 1e-6 HMAX for GSTIFF (DSTIFF's own round-off rule).
+  // ADAMS's defaults (docs/integrators.md, "Defaults"): HMAX is the output step (GSTIFF; HHT and
+  // NEWMARK alike), unlimited for DSTIFF; HINIT half the output step for GSTIFF, a twentieth for
+  // DSTIFF (and for HHT, as ADAMS's HHT logs show); HMIN 1e-6 HMAX for GSTIFF (DSTIFF's own
+  // round-off rule).
   p.hmax = s.hmax.value_or(dstiff ? std::numeric_limits<double>::infinity() : outputStep);
   const double hinitDefault = isBdfFamily(s.type) ? 0.5 * outputStep : outputStep / 20.0;
   p.hinit = std::min(s.hinit.value_or(hinitDefault), p.hmax);
@@ -195,8 +216,8 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
     p.beta = s.beta.value_or((1.0 - s.alpha) * (1.0 - s.alpha) / 4.0);
     p.gamma = s.gamma.value_or((1.0 - 2.0 * s.alpha) / 2.0);
   }
-  const model::RefreshPattern pattern = s.pattern.value_or(model::RefreshPattern{
-      {true, false, false, false, true, false, false, false, true, false}});
+  const model::RefreshPattern pattern = s.pattern.value_or(
+      model::RefreshPattern{{true, false, false, false, true, false, false, false, true, false}});
   p.patternGiven = s.pattern.has_value();
   for (int j = 0; j < 10; ++j) p.pattern[j] = pattern.evaluate[static_cast<size_t>(j)];
   return p;

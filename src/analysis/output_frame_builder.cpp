@@ -43,6 +43,13 @@ void appliedForces(const mechanics::MultibodySystem& s, ForceElementKind kind, i
   const mechanics::DynamicReads<double> base{yp.data(), &s.constraints()};
   const mechanics::DynamicReads<double> reads = s.forceElements().readsWith(&base);
   out.assign(count, {});
+  if (kind == ForceElementKind::Contact) {
+    // Only the contacts whose solids are near carry a load; the others' are the zeros `out`
+    // holds (a pile of N spheres has N² / 2 pair elements, docs/performance.md, "Contact pile").
+    for (const int e : s.forceElements().nearContacts(y.data()))
+      s.forceElements().action({kind, e}, false, t, y.data(), out[e].force, out[e].torque, &reads);
+    return;
+  }
   for (int e = 0; e < count; ++e)
     s.forceElements().action({kind, e}, false, t, y.data(), out[e].force, out[e].torque, &reads);
 }

@@ -1,23 +1,23 @@
 #pragma once
 // Applied force elements: SFORCE, SPRINGDAMPER, BUSHING / FIELD / BEAM (one linear law) and
-// VFORCE / VTORQUE / GFORCE (docs/theory.md §6) and CONTACT (§6c, mechanics/contact/). Each element computes, templated on the
-// scalar, the force and torque it applies to the part of its I marker and the reaction on the
-// part of its J (or JFLOAT) marker, from the marker frames and velocities. The residual
-// subtracts them from the Newton-Euler rows, so the Newton matrix, formed on dual numbers, holds
-// their exact derivatives; the read-back functions (SFORCE, SPDP, BUSH, ...) use the same code.
+// VFORCE / VTORQUE / GFORCE (docs/theory.md §6) and CONTACT (§6c, mechanics/contact/). Each element
+// computes, templated on the scalar, the force and torque it applies to the part of its I marker
+// and the reaction on the part of its J (or JFLOAT) marker, from the marker frames and velocities.
+// The residual subtracts them from the Newton-Euler rows, so the Newton matrix, formed on dual
+// numbers, holds their exact derivatives; the read-back functions (SFORCE, SPDP, BUSH, ...) use the
+// same code.
 
+#include <Eigen/Dense>
 #include <cmath>
 #include <numbers>
 #include <type_traits>
 #include <vector>
 
-#include <Eigen/Dense>
-
 #include "mechanics/bound_function.hpp"
-#include "mechanics/expression_run_state.hpp"
-#include "mechanics/friction/joint_friction.hpp"
 #include "mechanics/contact/contact_broad_phase.hpp"
 #include "mechanics/contact/contact_loads.hpp"
+#include "mechanics/expression_run_state.hpp"
+#include "mechanics/friction/joint_friction.hpp"
 #include "mechanics/pose.hpp"
 #include "mechanics/state_layout.hpp"
 #include "model/model.hpp"
@@ -27,8 +27,15 @@ namespace openmss::mechanics {
 // Friction: FRICTION on a joint (mechanics/friction/joint_friction.hpp), acting between the
 // joint's I and J markers. MultiPoint: NFORCE, which loads every one of its I markers and J
 // (multiPointLoads); loads() is empty for it. Contact: CONTACT (mechanics/contact/).
-enum class ForceElementKind { SForce, SpringDamper, LinearField, VectorForce, Friction, MultiPoint,
-                              Contact };
+enum class ForceElementKind {
+  SForce,
+  SpringDamper,
+  LinearField,
+  VectorForce,
+  Friction,
+  MultiPoint,
+  Contact
+};
 
 // One element: its kind and its index in the Model's vector of that kind.
 struct ForceElementRef {
@@ -83,6 +90,10 @@ class ForceElements {
   template <class T>
   void multiPointAction(int k, int marker, const T* y, V3<T>& force, V3<T>& torque) const;
 
+  // The CONTACT elements (ascending) whose solids' bounding spheres overlap at y: every other
+  // CONTACT's loads are exactly zero there (contactLoads' own broad phase, the same test).
+  const std::vector<int>& nearContacts(const double* y) const { return broadPhase_.near(y); }
+
   // The element's I marker and its J marker as the data set names it (JFLOAT for VFORCE,
   // VTORQUE, GFORCE; the J of an action-only SFORCE, which takes no reaction). NFORCE: -1 and
   // its J (its I markers are Model::nforces[k].iMarkers).
@@ -93,8 +104,8 @@ class ForceElements {
   template <class T>
   T sforceValue(int k, double t, const T* y, const DynamicReads<T>* reads = nullptr) const {
     const DynamicReads<T> r = readsWith(reads);
-    return evaluateFunction(*model_, layout_, model_->sforces[k].function, t, y,
-                            scratchValues_, scratchGrad_, &r, run_);
+    return evaluateFunction(*model_, layout_, model_->sforces[k].function, t, y, scratchValues_,
+                            scratchGrad_, &r, run_);
   }
 
   // Force read-backs in functions (force_read_back.hpp, docs/theory.md §4d). `reads` with
@@ -138,8 +149,7 @@ class ForceElements {
   template <class T>
   ElementLoads<T> linearFieldLoads(int k, double t, const T* y) const;
   template <class T>
-  ElementLoads<T> vectorForceLoads(int k, double t, const T* y,
-                                   const DynamicReads<T>* reads) const;
+  ElementLoads<T> vectorForceLoads(int k, double t, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
   ElementLoads<T> frictionLoads(int k, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
@@ -200,8 +210,8 @@ T ForceElements::springDamperAngle(int k, const MarkerState<T>& mi,
 }
 
 template <class T>
-void ForceElements::fieldDisplacement(const MarkerState<T>& mi, const MarkerState<T>& mj,
-                                      T q[6], T qdot[6]) {
+void ForceElements::fieldDisplacement(const MarkerState<T>& mi, const MarkerState<T>& mj, T q[6],
+                                      T qdot[6]) {
   const V3<T> d = mi.p - mj.p;
   const V3<T> dj = mj.a.tmul(d);
   // Projected rotations (AX, AY, AZ of I relative to J, not unwrapped): exact for a rotation
@@ -369,12 +379,10 @@ ElementLoads<T> ForceElements::contactElementLoads(int k, double t,
                                                    contact::ContactKinematics<T>& kin) const {
   const model::Contact& c = model_->contacts[k];
   // DYNAMICS_ONLY: friction in dynamic analyses only (ADAMS); the mode is the session's.
-  const bool friction =
-      c.friction == model::Contact::Friction::On ||
-      (c.friction == model::Contact::Friction::DynamicsOnly &&
-       analysisMode() == model::AnalysisMode::Dynamics);
-  const contact::ContactLoads<T> cl =
-      contact::contactLoads(*model_, layout_, c, kin, friction, t);
+  const bool friction = c.friction == model::Contact::Friction::On ||
+                        (c.friction == model::Contact::Friction::DynamicsOnly &&
+                         analysisMode() == model::AnalysisMode::Dynamics);
+  const contact::ContactLoads<T> cl = contact::contactLoads(*model_, layout_, c, kin, friction, t);
   ElementLoads<T> l;
   l.force = cl.force;
   l.torque = cl.torqueAtI;
@@ -390,13 +398,20 @@ template <class T>
 ElementLoads<T> ForceElements::loads(ForceElementRef e, double t, const T* y,
                                      const DynamicReads<T>* reads) const {
   switch (e.kind) {
-    case ForceElementKind::SForce: return sforceLoads(e.index, t, y, reads);
-    case ForceElementKind::SpringDamper: return springDamperLoads(e.index, y);
-    case ForceElementKind::LinearField: return linearFieldLoads(e.index, t, y);
-    case ForceElementKind::VectorForce: return vectorForceLoads(e.index, t, y, reads);
-    case ForceElementKind::Friction: return frictionLoads(e.index, y, reads);
-    case ForceElementKind::MultiPoint: return {};  // multiPointLoads
-    case ForceElementKind::Contact: return contactElementLoads(e.index, t, y);
+    case ForceElementKind::SForce:
+      return sforceLoads(e.index, t, y, reads);
+    case ForceElementKind::SpringDamper:
+      return springDamperLoads(e.index, y);
+    case ForceElementKind::LinearField:
+      return linearFieldLoads(e.index, t, y);
+    case ForceElementKind::VectorForce:
+      return vectorForceLoads(e.index, t, y, reads);
+    case ForceElementKind::Friction:
+      return frictionLoads(e.index, y, reads);
+    case ForceElementKind::MultiPoint:
+      return {};  // multiPointLoads
+    case ForceElementKind::Contact:
+      return contactElementLoads(e.index, t, y);
   }
   return {};
 }
@@ -405,9 +420,9 @@ template <class T>
 ElementLoads<T> ForceElements::frictionLoads(int k, const T* y,
                                              const DynamicReads<T>* reads) const {
   const friction::FrictionAnchor* anchor = run_ != nullptr ? run_->frictionAnchor(k) : nullptr;
-  const friction::FrictionResult<T> r = friction::frictionLoads(
-      *model_, layout_, reads != nullptr ? reads->constraints : nullptr, k, y, anchor,
-      analysisMode());
+  const friction::FrictionResult<T> r =
+      friction::frictionLoads(*model_, layout_, reads != nullptr ? reads->constraints : nullptr, k,
+                              y, anchor, analysisMode());
   const model::Joint& joint = model_->joints[model_->frictions[k].joint];
   ElementLoads<T> l;
   l.force = r.force;
@@ -508,10 +523,10 @@ void ForceElements::addToResidual(double t, const T* y, T* g, const DynamicReads
       multiPointLoads(e.index, y, f, tq, fj, tj);
       const model::MultiPointForce& nf = model_->nforces[e.index];
       for (size_t i = 0; i < nf.iMarkers.size(); ++i)
-        applyToBody(nf.iMarkers[i], markerState(*model_, layout_, nf.iMarkers[i], y).p, f[i],
-                    tq[i], true, true, y, g);
-      applyToBody(nf.jMarker, markerState(*model_, layout_, nf.jMarker, y).p, fj, tj, true, true,
-                  y, g);
+        applyToBody(nf.iMarkers[i], markerState(*model_, layout_, nf.iMarkers[i], y).p, f[i], tq[i],
+                    true, true, y, g);
+      applyToBody(nf.jMarker, markerState(*model_, layout_, nf.jMarker, y).p, fj, tj, true, true, y,
+                  g);
       continue;
     }
     if (e.kind == ForceElementKind::Contact) break;  // the last ones: addContactsToResidual
@@ -520,15 +535,14 @@ void ForceElements::addToResidual(double t, const T* y, T* g, const DynamicReads
     const MarkerState<T> mi = markerState(*model_, layout_, im, y);
     applyToBody(im, mi.p, l.force, l.torque, l.hasForce, l.hasTorque, y, g);
     if (l.reactionMarker >= 0)
-      applyToBody(l.reactionMarker, l.reactionPoint, l.reactionForce, l.reactionTorque,
-                  l.hasForce, l.hasTorque, y, g);
+      applyToBody(l.reactionMarker, l.reactionPoint, l.reactionForce, l.reactionTorque, l.hasForce,
+                  l.hasTorque, y, g);
   }
   if (!model_->contacts.empty()) addContactsToResidual(t, y, g, derivativesOnly);
 }
 
 template <class T>
-void ForceElements::addContactsToResidual(double t, const T* y, T* g,
-                                          bool derivativesOnly) const {
+void ForceElements::addContactsToResidual(double t, const T* y, T* g, bool derivativesOnly) const {
   const std::vector<int>& near = broadPhase_.near(y);
   contact::ContactKinematics<T> kin(*model_, layout_, y, &broadPhase_.slots());
   // Which bodies' states carry a derivative (all, unless derivativesOnly on dual numbers).
@@ -545,8 +559,8 @@ void ForceElements::addContactsToResidual(double t, const T* y, T* g,
     if (bi >= 0)
       applyAtPose(bi, kin.pose(bi), kin.marker(c.iMarker).p, l.force, l.torque, true, true, g);
     if (bj >= 0)
-      applyAtPose(bj, kin.pose(bj), l.reactionPoint, l.reactionForce, l.reactionTorque, true,
-                  true, g);
+      applyAtPose(bj, kin.pose(bj), l.reactionPoint, l.reactionForce, l.reactionTorque, true, true,
+                  g);
   }
 }
 

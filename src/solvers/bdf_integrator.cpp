@@ -174,6 +174,22 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   velocityRejected_ = false;
 }
 
+void BdfIntegrator::restart(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+  // The factors were formed with the row and column scaling of their cj (refresh()), which
+  // start() resets: kept with them. The first attempt from here uses them like any older
+  // matrix: the cj drift test, a corrector failure on attempt 0 and the slow-convergence
+  // refresh form a new one when it no longer serves.
+  const bool keep = haveJacobian_ && y0.size() == y_.size();
+  Eigen::VectorXd rowScale = rowScale_, colScale = colScale_;
+  const double cj = cjJacobian_;
+  start(t0, y0, yp0);
+  if (!keep) return;
+  rowScale_ = std::move(rowScale);
+  colScale_ = std::move(colScale);
+  cjJacobian_ = cj;
+  haveJacobian_ = true;
+}
+
 double BdfIntegrator::weightedNorm(const Eigen::VectorXd& v, const Eigen::VectorXd& w) {
   // The maximum (not a root-mean-square) so that one coordinate's error is not diluted by the
   // many that are at rest. PropagateNaN: a NaN anywhere fails the test (a plain maximum would
@@ -303,6 +319,9 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
       sparseSolver_.factor(sparseJac_);
+      stats_.sparseAnalyses = sparseSolver_.analyses();
+      stats_.fullFactorizations = sparseSolver_.fullFactorizations();
+      stats_.refactorizations = sparseSolver_.refactorizations();
     } else {
       problem_.newtonMatrix(tNew, yPred_, ypNew_, cj, jac_);
       jac_.array().colwise() *= rowScale_.array();
@@ -694,6 +713,38 @@ void BdfIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
     yp += dw[j] * ys_[j];
   }
   if (x != s) y = ys_[static_cast<size_t>(std::find(nodes, nodes + n, s) - nodes)];
+}
+
+// interpolate()'s y component by component: the same operations in the same order on each
+// entry (the build does not contract a*b+c, CMakeLists.txt), so the same bits.
+void BdfIntegrator::interpolateComponents(double s, const std::vector<int>& components,
+                                          Eigen::VectorXd& y) const {
+  if (y.size() != y_.size()) y = y_;
+  const int n = std::min(lastStepOrder_ + 1, static_cast<int>(ts_.size()));
+  if (n < 2) {
+    for (const int i : components) y(i) = y_(i) + (s - t_) * yp_(i);
+    return;
+  }
+  double nodes[8] = {}, w[8], dw[8];
+  for (int j = 0; j < n; ++j) nodes[j] = ts_[j];
+  if (s == nodes[0]) {
+    for (const int i : components) y(i) = y_(i);
+    return;
+  }
+  double x = s;
+  for (int j = 1; j < n; ++j)
+    if (x == nodes[j]) x = nodes[j] + 1e-9 * (nodes[0] - nodes[j]);
+  if (x != s) {
+    const Eigen::VectorXd& at = ys_[static_cast<size_t>(std::find(nodes, nodes + n, s) - nodes)];
+    for (const int i : components) y(i) = at(i);
+    return;
+  }
+  lagrangeAt(nodes, n, x, w, dw);
+  for (const int i : components) {
+    double v = 0.0;
+    for (int j = 0; j < n; ++j) v += w[j] * ys_[static_cast<size_t>(j)](i);
+    y(i) = v;
+  }
 }
 
 }  // namespace openmss::solvers

@@ -29,6 +29,8 @@ class BdfIntegrator final : public Integrator {
   BdfIntegrator(DaeProblem& problem, const MultistepSettings& settings);
 
   void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
+  // Keeps the Newton matrix, its factors and its scaling (docs/integrators.md, "Restarts").
+  void restart(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) override;
   bool step(double tout) override;
   bool setNextStepSize(double h) override {  // SENSOR/STEPSIZE
     h_ = h;
@@ -41,6 +43,8 @@ class BdfIntegrator final : public Integrator {
   double previousTime() const override { return ts_.size() > 1 ? ts_[1] : t_; }
   // The corrector polynomial of the last step (order k through the last k+1 solutions).
   void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
+  void interpolateComponents(double s, const std::vector<int>& components,
+                             Eigen::VectorXd& y) const override;
   const IntegratorStatistics& statistics() const override { return stats_; }
   // How often an order >= 3 was abandoned because the step it held shrank below the one order 2
   // had taken: the signature of an undamped mode that the order amplifies.

@@ -5,11 +5,10 @@
 // and, on failure, what the method knew when it gave up. The equations reach the method only
 // through solvers/dae_problem.hpp.
 
+#include <Eigen/Dense>
 #include <algorithm>
 #include <string>
 #include <vector>
-
-#include <Eigen/Dense>
 
 namespace openmss::solvers {
 
@@ -19,11 +18,17 @@ struct IntegratorStatistics {
   long newtonFailures = 0;
   long residualEvaluations = 0;
   long jacobianEvaluations = 0;
+  // Of the Newton matrices factorised by the sparse solver (KLU): symbolic analyses (one per new
+  // pattern), factorisations with fresh pivoting and refactorisations on the last pivots.
+  long sparseAnalyses = 0;
+  long fullFactorizations = 0;
+  long refactorizations = 0;
   int order = 1;
   double stepSize = 0.0;
 };
 
-// What the integrator knew when it gave up (when, which equation, which variable: what a user needs to find the cause).
+// What the integrator knew when it gave up (when, which equation, which variable: what a user needs
+// to find the cause).
 struct IntegratorFailure {
   double time = 0.0;
   double stepSize = 0.0;
@@ -48,9 +53,9 @@ struct IterationInfo {
 struct StepInfo {
   enum class Event { Attempt, Accepted, ErrorTestFailed, CorrectorFailed };
   Event event;
-  long step;         // number of the step attempted: accepted steps so far + 1
+  long step;  // number of the step attempted: accepted steps so far + 1
   int order;
-  double time;       // start of the step
+  double time;  // start of the step
   double stepSize;
   double errorNorm;  // weighted local error (1 = the tolerance); Accepted, ErrorTestFailed
 };
@@ -62,6 +67,13 @@ class Integrator {
   // Consistent initial values (y0, y'0) at t0. Also used to restart after a discontinuity
   // (SENSOR/RESTART): the method forgets its history.
   virtual void start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) = 0;
+  // As start(), after a discontinuity the method's Newton matrix still approximates well (a
+  // CONTACT onset: an IMPACT force's stiffness is zero at first touch, docs/theory.md §6c,
+  // "Events"): the history is forgotten, but a method may keep its matrix and factors for its
+  // modified Newton iteration (which re-forms them when it converges slowly or fails).
+  virtual void restart(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {
+    start(t0, y0, yp0);
+  }
   // The size of the next step attempt (SENSOR/STEPSIZE after a restart), still bounded by the
   // method's HMAX. Returns false when the method cannot take a size from outside (the caller
   // then says that STEPSIZE had no effect).
@@ -87,6 +99,17 @@ class Integrator {
   virtual double previousTime() const = 0;
   // The method's own interpolant at time s in [previousTime(), t()].
   virtual void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const = 0;
+  // interpolate()'s y at the listed components only, to the bit, written into y (sized as the
+  // state; the other entries are left as they are). The contact event locator bisects on the
+  // few bodies of one contact (docs/performance.md, "Contact pile"). The default interpolates
+  // everything.
+  virtual void interpolateComponents(double s, const std::vector<int>& components,
+                                     Eigen::VectorXd& y) const {
+    Eigen::VectorXd all, allp;
+    interpolate(s, all, allp);
+    if (y.size() != all.size()) y = all;
+    for (const int i : components) y(i) = all(i);
+  }
 
   virtual const IntegratorStatistics& statistics() const = 0;
   virtual const IntegratorFailure& failure() const = 0;

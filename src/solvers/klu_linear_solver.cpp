@@ -50,6 +50,7 @@ void KluLinearSolver::analyze(const Eigen::SparseMatrix<double>& pattern) {
   columnStart_.assign(outer, outer + n + 1);
   rowIndex_.assign(inner, inner + columnStart_[n]);
   impl_->symbolic = klu_analyze(n, columnStart_.data(), rowIndex_.data(), &impl_->common);
+  ++analyses_;
 }
 
 bool KluLinearSolver::samePattern(const Eigen::SparseMatrix<double>& m) const {

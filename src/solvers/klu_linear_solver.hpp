@@ -25,6 +25,8 @@ class KluLinearSolver final : public LinearSolver {
   // Factorisations with fresh pivoting and with the previous pivot sequence.
   int fullFactorizations() const { return full_; }
   int refactorizations() const { return refactor_; }
+  // Symbolic analyses (orderings) taken.
+  int analyses() const { return analyses_; }
   // Entries of the L and U factors of the last factorisation (the fill; a solve reads each once).
   long factorNonZeros() const;
   // The floating-point operations of a factorisation as the last analysis predicts them
@@ -51,7 +53,7 @@ class KluLinearSolver final : public LinearSolver {
   std::vector<int> columnStart_, rowIndex_;  // the analysed pattern
   bool factored_ = false;
   double rcondAtFullFactor_ = 0.0;
-  int full_ = 0, refactor_ = 0;
+  int full_ = 0, refactor_ = 0, analyses_ = 0;
 };
 
 }  // namespace openmss::solvers

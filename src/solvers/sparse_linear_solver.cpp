@@ -31,6 +31,7 @@ bool SparseLinearSolver::samePattern(const Eigen::SparseMatrix<double>& m) const
 
 bool SparseLinearSolver::factor(const Eigen::SparseMatrix<double>& m) {
   if (!samePattern(m)) analyze(m);
+  if (active_ == &supernodal_) ++supernodalFactorizations_;
   return active_->factor(m);
 }
 

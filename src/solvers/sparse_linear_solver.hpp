@@ -34,6 +34,10 @@ class SparseLinearSolver final : public LinearSolver {
   double predictedFlops() const { return predictedFlops_; }
   // Patterns analysed so far.
   long analyses() const { return analyses_; }
+  // Factorisations with fresh pivoting (KLU's full ones and every supernodal one) and KLU's
+  // refactorisations on the previous pivot sequence (the .msg's counts, docs/performance.md).
+  long fullFactorizations() const { return klu_.fullFactorizations() + supernodalFactorizations_; }
+  long refactorizations() const { return klu_.refactorizations(); }
 
  private:
   bool samePattern(const Eigen::SparseMatrix<double>& m) const;
@@ -45,6 +49,7 @@ class SparseLinearSolver final : public LinearSolver {
   double predictedFlops_ = 0.0;
   double supernodalFlops_ = kSupernodalFlops;
   long analyses_ = 0;
+  long supernodalFactorizations_ = 0;
 };
 
 }  // namespace openmss::solvers

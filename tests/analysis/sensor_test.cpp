@@ -33,8 +33,7 @@ std::string fallingMass(const std::string& sensor) {
   return "falling mass\nUNITS/ SYSTEM=MKS\nPART/1, GROUND\nMARKER/10, PART=1\n"
          "PART/2, MASS=1, IP=1,1,1, CM=20, QG=0,0,10\nMARKER/20, PART=2\n"
          "ACCGRAV/ KGRAV=-9.81\n" +
-         sensor +
-         "REQUEST/1, F2=DZ(20), F3=VZ(20), F4=SENVAL(1)\nOUTPUT/REQSAVE\nEND\n";
+         sensor + "REQUEST/1, F2=DZ(20), F3=VZ(20), F4=SENVAL(1)\nOUTPUT/REQSAVE\nEND\n";
 }
 
 // Runs the commands through a Session; returns it for its summary.
@@ -45,7 +44,7 @@ struct SensorRun {
 };
 
 SensorRun simulate(const std::string& name, const std::string& sensor,
-             const std::vector<std::string>& commands) {
+                   const std::vector<std::string>& commands) {
   SensorRun r;
   r.dir = scratch(name);
   write(r.dir / "f.adm", fallingMass(sensor));
@@ -79,11 +78,12 @@ double heightTolerance(double t, double z) { return printed(z) + kG * t * printe
 TEST(Sensor, HaltStopsAtTheCrossingTimeWithinTheSensorError) {
   for (const char* how : {"", ", BISECTION"}) {
     for (double error : {1e-3, 1e-6}) {
-      const SensorRun r = simulate(
-          "halt", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, ERROR=" + std::to_string(error) +
-                      ", HALT" + how + "\n",
-          {"integrator/gstiff, error=1e-8", "simulate/transient, end=2, dtout=0.1",
-           "simulate/transient, end=3, dtout=0.1"});
+      const SensorRun r =
+          simulate("halt",
+                   "SENSOR/1, FUNCTION=DZ(20), VALUE=5, ERROR=" + std::to_string(error) + ", HALT" +
+                       how + "\n",
+                   {"integrator/gstiff, error=1e-8", "simulate/transient, end=2, dtout=0.1",
+                    "simulate/transient, end=3, dtout=0.1"});
       ASSERT_TRUE(r.ok) << r.dir;
       EXPECT_TRUE(r.session->stopped());  // HALT ends the run: the second SIMULATE never runs
       EXPECT_NEAR(r.session->summary().time, kCrossing, error / kSpeed) << how << error;
@@ -101,10 +101,10 @@ TEST(Sensor, HaltStopsAtTheCrossingTimeWithinTheSensorError) {
 }
 
 TEST(Sensor, EvaluateStoresTheValueSenvalReadsAndReturnEndsTheCommand) {
-  const SensorRun r = simulate(
-      "senval", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, LE, RETURN, EVALUATE=VZ(20)\n",
-      {"integrator/gstiff, error=1e-8", "simulate/transient, end=2, dtout=0.1",
-       "simulate/transient, end=2, dtout=0.1"});
+  const SensorRun r =
+      simulate("senval", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, LE, RETURN, EVALUATE=VZ(20)\n",
+               {"integrator/gstiff, error=1e-8", "simulate/transient, end=2, dtout=0.1",
+                "simulate/transient, end=2, dtout=0.1"});
   ASSERT_TRUE(r.ok) << r.dir;
   EXPECT_FALSE(r.session->stopped());
   EXPECT_NEAR(r.session->summary().time, 2.0, 1e-12);  // the second SIMULATE ran to its END
@@ -127,17 +127,18 @@ TEST(Sensor, EvaluateStoresTheValueSenvalReadsAndReturnEndsTheCommand) {
 }
 
 TEST(Sensor, PrintWritesAnOutputAtTheEventAndTheRunGoesOn) {
-  const SensorRun r = simulate("print", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, GE, PRINT\n"
-                                  "SENSOR/2, FUNCTION=DZ(20), VALUE=5, LE, PRINT\n",
-                         {"integrator/gstiff, error=1e-8", "simulate/transient, end=2, dtout=0.1"});
+  const SensorRun r =
+      simulate("print",
+               "SENSOR/1, FUNCTION=DZ(20), VALUE=5, GE, PRINT\n"
+               "SENSOR/2, FUNCTION=DZ(20), VALUE=5, LE, PRINT\n",
+               {"integrator/gstiff, error=1e-8", "simulate/transient, end=2, dtout=0.1"});
   ASSERT_TRUE(r.ok) << r.dir;
   const auto s = steps(r);
   // 21 regular outputs and one at the event (SENSOR/1 holds from the start: it never acts).
   ASSERT_EQ(s.size(), 22u);
   int atEvent = 0;
   for (const auto& st : s) {
-    EXPECT_NEAR(st.rows[0][0], height(st.time), heightTolerance(st.time, st.rows[0][0]))
-        << st.time;
+    EXPECT_NEAR(st.rows[0][0], height(st.time), heightTolerance(st.time, st.rows[0][0])) << st.time;
     atEvent += std::abs(st.time - kCrossing) < 1e-5;
   }
   EXPECT_EQ(atEvent, 1);
@@ -147,14 +148,14 @@ TEST(Sensor, PrintWritesAnOutputAtTheEventAndTheRunGoesOn) {
 }
 
 TEST(Sensor, RestartWithDtChangesTheOutputGridFromTheEvent) {
-  const SensorRun r = simulate("dt", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, RESTART, DT=0.03\n",
-                         {"integrator/gstiff, error=1e-8", "simulate/transient, end=1.5, dtout=0.1"});
+  const SensorRun r =
+      simulate("dt", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, RESTART, DT=0.03\n",
+               {"integrator/gstiff, error=1e-8", "simulate/transient, end=1.5, dtout=0.1"});
   ASSERT_TRUE(r.ok) << r.dir;
   const auto s = steps(r);
   std::vector<double> after;
   for (const auto& st : s) {
-    EXPECT_NEAR(st.rows[0][0], height(st.time), heightTolerance(st.time, st.rows[0][0]))
-        << st.time;
+    EXPECT_NEAR(st.rows[0][0], height(st.time), heightTolerance(st.time, st.rows[0][0])) << st.time;
     if (st.time > kCrossing + 1e-6) after.push_back(st.time);
   }
   // Outputs at tc + 0.03 k while before END, then END (the restart kept the solution exact).
@@ -166,9 +167,9 @@ TEST(Sensor, RestartWithDtChangesTheOutputGridFromTheEvent) {
 }
 
 TEST(Sensor, StepsizeSetsTheFirstStepAfterTheEvent) {
-  const SensorRun r = simulate("stepsize",
-                         "SENSOR/1, FUNCTION=DZ(20), VALUE=5, STEPSIZE=1.25e-4\nDEBUG/EPRINT\n",
-                         {"integrator/gstiff, error=1e-8", "simulate/transient, end=1.2, dtout=0.1"});
+  const SensorRun r =
+      simulate("stepsize", "SENSOR/1, FUNCTION=DZ(20), VALUE=5, STEPSIZE=1.25e-4\nDEBUG/EPRINT\n",
+               {"integrator/gstiff, error=1e-8", "simulate/transient, end=1.2, dtout=0.1"});
   ASSERT_TRUE(r.ok) << r.dir;
   const auto s = steps(r);
   EXPECT_NEAR(s.back().rows[0][0], height(1.2), printed(height(1.2)) + 1e-6);
@@ -176,6 +177,24 @@ TEST(Sensor, StepsizeSetsTheFirstStepAfterTheEvent) {
   const std::string msg = slurp(r.dir / "f.msg");
   EXPECT_NE(msg.find("time 1.00963" /* the event */), std::string::npos);
   EXPECT_NE(msg.find("step size 1.250000E-04"), std::string::npos);
+}
+
+// The SI2 formulation and INTERPOLATE=ON wrap the BDF method (the SI2 state, the interpolation
+// to output times); STEPSIZE must still reach the method, not fall back to HINIT.
+TEST(Sensor, StepsizeReachesTheMethodUnderSi2AndInterpolation) {
+  for (const char* options : {", si2", ", interpolate=on"}) {
+    const SensorRun r =
+        simulate(std::string("stepsize-wrapped") + (options[2] == 's' ? "-si2" : "-interp"),
+                 "SENSOR/1, FUNCTION=DZ(20), VALUE=5, STEPSIZE=1.25e-4\nDEBUG/EPRINT\n",
+                 {std::string("integrator/gstiff, error=1e-8") + options,
+                  "simulate/transient, end=1.2, dtout=0.1"});
+    ASSERT_TRUE(r.ok) << r.dir << options;
+    const auto s = steps(r);
+    EXPECT_NEAR(s.back().rows[0][0], height(1.2), printed(height(1.2)) + 1e-6) << options;
+    const std::string msg = slurp(r.dir / "f.msg");
+    EXPECT_NE(msg.find("step size 1.250000E-04"), std::string::npos) << options << "\n" << msg;
+    EXPECT_EQ(msg.find("STEPSIZE had"), std::string::npos) << options << "\n" << msg;
+  }
 }
 
 TEST(Sensor, TheMessageFileSaysWhichSensorHaltedTheRunAndWhen) {
@@ -202,14 +221,14 @@ TEST(Sensor, TheMessageFileSaysWhichSensorHaltedTheRunAndWhen) {
 
 TEST(Sensor, KinematicAnalysesRefuseSensors) {
   const SensorRun r = simulate("kin",
-                         "JOINT/1, TRANSLATIONAL, I=20, J=10\nMOTION/1, JOINT=1, "
-                         "FUNCTION=-TIME\nSENSOR/1, FUNCTION=DZ(20), VALUE=5, HALT\n",
-                         {"simulate/kinematics, end=1, steps=2"});
+                               "JOINT/1, TRANSLATIONAL, I=20, J=10\nMOTION/1, JOINT=1, "
+                               "FUNCTION=-TIME\nSENSOR/1, FUNCTION=DZ(20), VALUE=5, HALT\n",
+                               {"simulate/kinematics, end=1, steps=2"});
   EXPECT_FALSE(r.ok);
   bool named = false;
   for (const auto& d : r.session->diagnostics().all())
-    named |= d.message.find("SENSOR events are detected in dynamic analyses only") !=
-             std::string::npos;
+    named |=
+        d.message.find("SENSOR events are detected in dynamic analyses only") != std::string::npos;
   EXPECT_TRUE(named);
 }
 

@@ -342,6 +342,49 @@ TEST(ContactPile, SweepEqualsBruteForce) {
   EXPECT_LT(nearTotal, 36 * cases);
 }
 
+// The grid of the broad phase (contact_sweep.hpp: from 64 solids, the spheres in cells, the
+// box against all) against the brute-force test, on 80 spheres scattered (deterministic LCG)
+// from a heap tighter than their diameter to apart, at the near-pair factors; and with one
+// sphere thrown 50 m away, where the grid would be too sparse and the sweep answers.
+TEST(ContactPile, GridEqualsBruteForce) {
+  std::vector<std::array<double, 3>> centres;
+  for (int i = 0; i < 80; ++i)
+    centres.push_back({0.12 * (i % 5), 0.12 * (i / 5 % 4), 0.12 * (i / 20)});
+  const model::Model m = build(
+      sphereDeck("grid", centres, "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-4, EXPONENT=1.5\n"));
+  mechanics::MultibodySystem s(m);
+  mechanics::contact::ContactBroadPhase broad(m, s.layout());
+  unsigned state = 4321;
+  auto uniform = [&] {
+    state = 1103515245u * state + 12345u;
+    return (state >> 8) / 16777216.0;
+  };
+  int nearTotal = 0, cases = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    Eigen::VectorXd y = s.initialState();
+    const double spread = 0.2 + 1.0 * uniform();  // 80 spheres of 0.1 in 0.2^3 m^3 to 1.2^3
+    for (int b = 0; b < s.layout().bodies; ++b)
+      for (int c = 0; c < 3; ++c)
+        y(s.layout().body(b) + StateLayout::kR + c) = spread * uniform() - 0.3 * (c == 2);
+    if (trial % 10 == 9) y(s.layout().body(0) + StateLayout::kR) = 50.0;
+    for (const double factor :
+         {1.0, analysis::MultibodyDae::kEnter, analysis::MultibodyDae::kLeave}) {
+      const std::vector<int> found = broad.nearWithin(y.data(), factor);
+      EXPECT_EQ(found, broad.nearBruteForce(y.data(), factor)) << "trial " << trial;
+      nearTotal += static_cast<int>(found.size());
+      ++cases;
+    }
+  }
+  std::printf("contact grid: %d cases (%ld by the grid), %.1f near elements on average of %zu\n",
+              cases, broad.sweep().gridAnswers(), double(nearTotal) / cases, m.contacts.size());
+  // Both paths ran: the grid on the heaps, the sweep on the far sphere's trials (4 x 3 cases)
+  // and on the loosest spreads (more cells than 8 per sphere).
+  EXPECT_GE(broad.sweep().gridAnswers(), cases / 2);
+  EXPECT_LE(broad.sweep().gridAnswers(), cases - 12);
+  // Sets from a few pairs to hundreds: the grid's cells were exercised, not only the box.
+  EXPECT_GT(nearTotal, 150 * cases);
+}
+
 // Physics on the near-pair pattern: eight spheres stacked on the floor along z (centres on one
 // vertical line, so every force is vertical; DAMPING 100), 0.02 apart at the start (not near: the
 // near set changes at each landing), come to rest with the static penetrations of IMPACT's k d^1.5:

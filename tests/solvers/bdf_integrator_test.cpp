@@ -3,10 +3,10 @@
 // interpolant inside a step against the closed form x = cos t, v = -sin t.
 #include "solvers/bdf_integrator.hpp"
 
+#include <gtest/gtest.h>
+
 #include <cmath>
 #include <string>
-
-#include <gtest/gtest.h>
 
 namespace openmss::solvers {
 namespace {
@@ -79,6 +79,38 @@ TEST(BdfIntegrator, InterpolantInsideAStepMatchesTheClosedForm) {
   }
   bdf.interpolate(b, y, yp);
   EXPECT_EQ(y, bdf.y());  // the end of the step is the accepted solution itself
+}
+
+// interpolateComponents (the contact locator's per-contact bisection, docs/theory.md §6c
+// "Events") against interpolate: the listed entry to the bit, the others left as they were, on
+// the first step from a start (the order-1 path), inside a later step and at its two ends.
+TEST(BdfIntegrator, InterpolateComponentsIsInterpolateToTheBit) {
+  Oscillator problem;
+  MultistepSettings settings;
+  settings.error = 1e-9;
+  settings.hinit = 1e-4;
+  settings.hmax = 0.05;
+  BdfIntegrator bdf(problem, settings);
+  bdf.start(0.0, Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, -1.0));
+  Eigen::VectorXd y, yp, part;
+  int compared = 0;
+  for (const double until : {0.0, 2.0}) {
+    if (until > 0.0) {
+      ASSERT_TRUE(bdf.advanceTo(until));
+    }
+    ASSERT_TRUE(bdf.step(3.0));
+    const double a = bdf.previousTime(), b = bdf.t();
+    for (double f : {0.0, 0.3, 0.5, 0.9, 1.0}) {
+      const double s = a + f * (b - a);
+      bdf.interpolate(s, y, yp);
+      part = Eigen::Vector2d(7.0, 7.0);  // sentinels: entry 0 must stay as it is
+      bdf.interpolateComponents(s, {1}, part);
+      EXPECT_EQ(part(0), 7.0) << "at " << s;
+      EXPECT_EQ(part(1), y(1)) << "at " << s;  // exact equality: the same operations
+      ++compared;
+    }
+  }
+  EXPECT_EQ(compared, 10);
 }
 
 }  // namespace

@@ -97,6 +97,8 @@ class ContactBroadPhase {
     return out;
   }
 
+  const BoundingSweep& sweep() const { return sweep_; }
+
   // The brute-force answer of nearWithin (every solid pair of every element): the reference
   // of the sweep's tests.
   std::vector<int> nearBruteForce(const double* y, double factor) const {
