@@ -109,8 +109,11 @@ bool ContactEventIntegrator::step(double tout) {
   // until the bracket is 1e-10 of the step (or at rounding); the event time is hi. Only the
   // entries the contact reads are interpolated (the same bits as the whole state's).
   const auto& contacts = system_.model().contacts;
-  std::vector<ContactEvent> found;
-  std::vector<int> foundIndex;
+  struct Located {
+    ContactEvent event;
+    int element;  // index into Model::contacts
+  };
+  std::vector<Located> found;
   Eigen::VectorXd y = inner_.y(), yp;
   const double tol = std::max(1e-10 * (b - a), 4e-16 * std::max(1.0, std::abs(b)));
   for (const int k : changed) {
@@ -125,23 +128,11 @@ bool ContactEventIntegrator::step(double tout) {
         inner_.interpolateComponents(mid, read, y);
       (touches(system_, contacts[k], y) == before ? lo : hi) = mid;
     }
-    found.push_back({hi, contacts[k].id, !before});
-    foundIndex.push_back(k);
+    found.push_back({{hi, contacts[k].id, !before}, k});
   }
-  {  // sorted by time, stably (ties keep the ascending element order); foundIndex alongside
-    std::vector<size_t> order(found.size());
-    for (size_t i = 0; i < order.size(); ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(),
-                     [&](size_t x, size_t z) { return found[x].time < found[z].time; });
-    std::vector<ContactEvent> f;
-    std::vector<int> fi;
-    for (const size_t i : order) {
-      f.push_back(found[i]);
-      fi.push_back(foundIndex[i]);
-    }
-    found = std::move(f);
-    foundIndex = std::move(fi);
-  }
+  // By time; ties keep the ascending element order.
+  std::stable_sort(found.begin(), found.end(),
+                   [](const Located& x, const Located& z) { return x.event.time < z.event.time; });
   // The step is cut back to its first onset, so that no step's history (the solutions before
   // its start the multistep method interpolates) lies before an onset and its end after it.
   // A step from a (re)start has no such history (order 1 from one consistent state, under the
@@ -151,9 +142,9 @@ bool ContactEventIntegrator::step(double tout) {
   // docs/performance.md, "Contact pile").
   double restartAt = b;
   if (restartAtOnset_)
-    for (const ContactEvent& e : found)
-      if (e.onset) {
-        restartAt = e.time;
+    for (const Located& f : found)
+      if (f.event.onset) {
+        restartAt = f.event.time;
         if (!fromStart) break;
       }
   if (restartAt < b) {
@@ -173,20 +164,18 @@ bool ContactEventIntegrator::step(double tout) {
     // The located events up to the restart set those contacts' state (the projection may
     // have moved a touch by a rounding); the rest is the state at the restart.
     std::vector<int> at = touching(inner_.y());
-    for (size_t i = 0; i < found.size(); ++i) {
-      if (found[i].time > restartAt) continue;
-      const int k = foundIndex[i];
-      const auto it = std::lower_bound(at.begin(), at.end(), k);
-      const bool in = it != at.end() && *it == k;
-      if (found[i].onset && !in) at.insert(it, k);
-      if (!found[i].onset && in) at.erase(it);
+    for (const Located& f : found) {
+      if (f.event.time > restartAt) continue;
+      const auto it = std::lower_bound(at.begin(), at.end(), f.element);
+      const bool in = it != at.end() && *it == f.element;
+      if (f.event.onset && !in) at.insert(it, f.element);
+      if (!f.event.onset && in) at.erase(it);
+      events_.push_back(f.event);
     }
     state_ = at;
-    for (const ContactEvent& e : found)
-      if (e.time <= restartAt) events_.push_back(e);
     return true;
   }
-  events_.insert(events_.end(), found.begin(), found.end());
+  for (const Located& f : found) events_.push_back(f.event);
   state_ = now;
   return true;
 }

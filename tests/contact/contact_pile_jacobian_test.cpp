@@ -308,6 +308,16 @@ TEST(ContactPile, SupernodalLuRunMatchesTheKluRun) {
   EXPECT_LE(worst, 1e-9);
 }
 
+// A deterministic uniform number in [0, 1) (a linear congruential generator): the broad-phase
+// tests' scattered positions, the same on every platform.
+struct Lcg {
+  unsigned state;
+  double operator()() {
+    state = 1103515245u * state + 12345u;
+    return (state >> 8) / 16777216.0;
+  }
+};
+
 // The sort and sweep (contact_sweep.hpp) against the brute-force test of every solid pair of
 // every element, on the 8-sphere deck with the spheres scattered (deterministic LCG) from
 // touching to apart, at the factors the near-pair pattern uses.
@@ -315,11 +325,7 @@ TEST(ContactPile, SweepEqualsBruteForce) {
   const model::Model m = build(dropDeck());
   mechanics::MultibodySystem s(m);
   mechanics::contact::ContactBroadPhase broad(m, s.layout());
-  unsigned state = 12345;
-  auto uniform = [&] {
-    state = 1103515245u * state + 12345u;
-    return (state >> 8) / 16777216.0;
-  };
+  Lcg uniform{12345u};
   int nearTotal = 0, cases = 0;
   for (int trial = 0; trial < 200; ++trial) {
     Eigen::VectorXd y = s.initialState();
@@ -354,11 +360,7 @@ TEST(ContactPile, GridEqualsBruteForce) {
       sphereDeck("grid", centres, "IMPACT, STIFFNESS=1e5, DAMPING=10, DMAX=1e-4, EXPONENT=1.5\n"));
   mechanics::MultibodySystem s(m);
   mechanics::contact::ContactBroadPhase broad(m, s.layout());
-  unsigned state = 4321;
-  auto uniform = [&] {
-    state = 1103515245u * state + 12345u;
-    return (state >> 8) / 16777216.0;
-  };
+  Lcg uniform{4321u};
   int nearTotal = 0, cases = 0;
   for (int trial = 0; trial < 40; ++trial) {
     Eigen::VectorXd y = s.initialState();

@@ -54,13 +54,19 @@ TEST(BdfIntegrator, StepsNeverPassTheOutputTimeAndLandOnIt) {
   EXPECT_EQ(integrator.statistics().steps, steps);
 }
 
-TEST(BdfIntegrator, InterpolantInsideAStepMatchesTheClosedForm) {
-  Oscillator problem;
+// The oscillator at ERROR 1e-9, HINIT 1e-4, HMAX 0.05: steps short enough for the
+// interpolation tests below to look inside a step of a mature (higher-order) history.
+MultistepSettings fineSettings() {
   MultistepSettings settings;
   settings.error = 1e-9;
   settings.hinit = 1e-4;
   settings.hmax = 0.05;
-  BdfIntegrator bdf(problem, settings);
+  return settings;
+}
+
+TEST(BdfIntegrator, InterpolantInsideAStepMatchesTheClosedForm) {
+  Oscillator problem;
+  BdfIntegrator bdf(problem, fineSettings());
   bdf.start(0.0, Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, -1.0));
   ASSERT_TRUE(bdf.advanceTo(2.0));
   ASSERT_TRUE(bdf.step(3.0));  // one more step; interpolate inside it
@@ -86,11 +92,7 @@ TEST(BdfIntegrator, InterpolantInsideAStepMatchesTheClosedForm) {
 // the first step from a start (the order-1 path), inside a later step and at its two ends.
 TEST(BdfIntegrator, InterpolateComponentsIsInterpolateToTheBit) {
   Oscillator problem;
-  MultistepSettings settings;
-  settings.error = 1e-9;
-  settings.hinit = 1e-4;
-  settings.hmax = 0.05;
-  BdfIntegrator bdf(problem, settings);
+  BdfIntegrator bdf(problem, fineSettings());
   bdf.start(0.0, Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, -1.0));
   Eigen::VectorXd y, yp, part;
   int compared = 0;
