@@ -40,9 +40,11 @@ STIFF_MODELS = {"chain-stiff4", "chain-stiff8", "bushing"}
 # MERSON, the explicit method for non-stiff models (docs/integrators.md, "MERSON"), on the
 # models it is meant for; not on the stiff bushing chain, where its steps are held by stability
 # (it warns and names GSTIFF).
-# HHT, the other integrator of real data sets (issue 21), at ERROR = 1e-6.
+# HHT, the other integrator of real data sets (issue 21), from ERROR = 1e-3 (ADAMS's default)
+# down, for the same reason as GSTIFF: its tip error at 1e-3 is far above a peer's loosest run.
 OPENMSS_LADDER = [("GSTIFF", 1e-3), ("GSTIFF", 1e-4), ("GSTIFF", 1e-5), ("GSTIFF", 1e-6),
-                  ("WSTIFF", 1e-3), ("WSTIFF", 1e-4), ("WSTIFF", 1e-6), ("HHT", 1e-6),
+                  ("WSTIFF", 1e-3), ("WSTIFF", 1e-4), ("WSTIFF", 1e-6), ("HHT", 1e-3),
+                  ("HHT", 1e-4), ("HHT", 1e-5), ("HHT", 1e-6),
                   ("MERSON", 1e-4), ("MERSON", 1e-5), ("MERSON", 1e-6)]
 OPENMSS_SKIP = {("MERSON", m) for m in STIFF_MODELS}
 # Simbody (integrator, accuracy): RungeKuttaMersonIntegrator (1e-6: the issue's figure); on the
