@@ -7,12 +7,15 @@ namespace {
 
 const char* bodyEntry(int offset, bool equation) {
   using L = mechanics::StateLayout;
-  static const char* vars[L::kPerBody] = {"X", "Y", "Z", "E0", "E1", "E2", "E3",
+  static const char* vars[L::kPerBody] = {"X",  "Y",  "Z",  "E0", "E1", "E2", "E3",
                                           "VX", "VY", "VZ", "WX", "WY", "WZ", "MU"};
-  static const char* eqs[L::kPerBody] = {
-      "dX/dt = VX", "dY/dt = VY", "dZ/dt = VZ", "dE0/dt", "dE1/dt", "dE2/dt", "dE3/dt",
-      "force balance X", "force balance Y", "force balance Z", "moment balance X",
-      "moment balance Y", "moment balance Z", "Euler-parameter normalisation"};
+  static const char* eqs[L::kPerBody] = {"dX/dt = VX",       "dY/dt = VY",
+                                         "dZ/dt = VZ",       "dE0/dt",
+                                         "dE1/dt",           "dE2/dt",
+                                         "dE3/dt",           "force balance X",
+                                         "force balance Y",  "force balance Z",
+                                         "moment balance X", "moment balance Y",
+                                         "moment balance Z", "Euler-parameter normalisation"};
   return equation ? eqs[offset] : vars[offset];
 }
 
@@ -24,7 +27,8 @@ std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, in
   if (l.isUserDifferential(i)) {
     const int k = i - l.userDiff(0);
     if (k < nd)
-      return (equation ? "dDIF/dt = DIF1 of DIFF/" : "DIF of DIFF/") + std::to_string(m.diffs[k].id);
+      return (equation ? "dDIF/dt = DIF1 of DIFF/" : "DIF of DIFF/") +
+             std::to_string(m.diffs[k].id);
     for (const auto& e : m.linearStates)
       if (k >= e.firstState && k < e.firstState + e.a.rows())
         return std::string(equation ? "state equation " : "state ") +
@@ -38,7 +42,8 @@ std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, in
     return "user state";
   }
   const int k = i - l.userAlg(0);
-  if (k < nv) return "VARIABLE/" + std::to_string(m.variables[k].id) + (equation ? " function" : "");
+  if (k < nv)
+    return "VARIABLE/" + std::to_string(m.variables[k].id) + (equation ? " function" : "");
   for (const auto& e : m.generalStates)  // GSE outputs, after the DIFF derivatives
     if (k >= e.firstOutput && k < e.firstOutput + e.no)
       return std::string(equation ? "output equation " : "output ") +
@@ -48,6 +53,20 @@ std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, in
 }
 
 }  // namespace
+
+void MultibodyDae::addRateTerm(const Eigen::VectorXd& d, Eigen::VectorXd& out) const {
+  // The y' part of MultibodySystem::residual's body rows, in its operation order.
+  using L = mechanics::StateLayout;
+  for (int b = 0; b < system_.layout().bodies; ++b) {
+    const int o = system_.layout().body(b);
+    const double m = system_.bodyMass(b);
+    for (int c = 0; c < 3; ++c) out(o + L::kV + c) += m * d(o + L::kV + c);
+    const Eigen::Matrix3d& jm = system_.bodyInertia(b);
+    for (int r = 0; r < 3; ++r)
+      out(o + L::kW + r) +=
+          jm(r, 0) * d(o + L::kW) + jm(r, 1) * d(o + L::kW + 1) + jm(r, 2) * d(o + L::kW + 2);
+  }
+}
 
 std::string MultibodyDae::equationName(int row) const {
   const auto& l = system_.layout();
@@ -109,9 +128,8 @@ void MultibodyDae::updateNearPattern(const Eigen::VectorXd& y) {
   ++rebuilds_;
 }
 
-void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
-                                      const Eigen::VectorXd& yp, double cj,
-                                      Eigen::SparseMatrix<double>& jac) {
+void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                                      double cj, Eigen::SparseMatrix<double>& jac) {
   pattern();
   if (nearContacts_) updateNearPattern(y);
   // The caller's matrix takes the current pattern when its structure differs (a near-pair

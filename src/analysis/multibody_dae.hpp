@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "mechanics/contact/contact_broad_phase.hpp"
+#include "mechanics/coupled_accelerations.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "solvers/dae_problem.hpp"
 
@@ -15,7 +16,9 @@ class MultibodyDae : public solvers::DaeProblem {
   // where the matrix is evaluated, rebuilt when that set changes (docs/theory.md §6c,
   // "Near-pair pattern"); false: every CONTACT couples its bodies, one fixed pattern.
   explicit MultibodyDae(const mechanics::MultibodySystem& system, bool nearContactPattern = true)
-      : system_(system), nearContacts_(nearContactPattern && !system.model().contacts.empty()) {
+      : system_(system),
+        nearContacts_(nearContactPattern && !system.model().contacts.empty()),
+        affineInRates_(!mechanics::readsAccelerationsOrReactions(system.model())) {
     if (nearContacts_) broadPhase_ = {system.model(), system.layout()};
   }
 
@@ -49,6 +52,12 @@ class MultibodyDae : public solvers::DaeProblem {
   }
   std::string equationName(int row) const override;
   std::string variableName(int i) const override;
+  // The body rows are m v' - m g and J w' + w x J w (constant m and body-frame J); y' enters
+  // other force-balance terms only through functions that read accelerations (ACCX.., WDTX..,
+  // directly, through a read-back or a user routine's SYSFNC), which a model without such
+  // reads cannot have (mechanics/coupled_accelerations.hpp).
+  bool forceRowsAffineInRates() const override { return affineInRates_; }
+  void addRateTerm(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
 
   // The sparse Newton matrix: structural pattern and compressed forward AD
   // (mechanics/jacobian_pattern.hpp). Every evaluation is checked against one exact
@@ -57,8 +66,8 @@ class MultibodyDae : public solvers::DaeProblem {
   // convergence.
   bool sparse() const override { return true; }
   const Eigen::SparseMatrix<double>* pattern() override;
-  void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                          double cj, Eigen::SparseMatrix<double>& jac) override;
+  void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
+                          Eigen::SparseMatrix<double>& jac) override;
   const mechanics::JacobianPattern& jacobianPattern() {
     pattern();
     return pattern_;
@@ -84,6 +93,7 @@ class MultibodyDae : public solvers::DaeProblem {
 
   const mechanics::MultibodySystem& system_;
   bool nearContacts_ = false;
+  bool affineInRates_ = false;
   mechanics::contact::ContactBroadPhase broadPhase_;
   int rebuilds_ = 0;
   mechanics::JacobianPattern pattern_;

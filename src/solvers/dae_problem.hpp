@@ -3,10 +3,9 @@
 // G(t, y, y') = 0, its Newton matrix dG/dy + cj dG/dy', and names for diagnostics. GSTIFF-,
 // DASSL- and HHT-style methods all work through it.
 
-#include <string>
-
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
+#include <string>
 
 namespace openmss::solvers {
 
@@ -40,6 +39,13 @@ class DaeProblem {
   // every differential unknown first-order.
   enum class Role { Algebraic, FirstOrder, Position, Velocity };
   virtual Role role(int i) const { return differential(i) ? Role::FirstOrder : Role::Algebraic; }
+
+  // True when y' enters the force-balance (Velocity) rows only through a constant inertia
+  // term: G_v(t, y, y') = B y' + f(t, y) with B fixed. HHT then evaluates the rows it weights
+  // at the previous step once per step instead of once per corrector iteration
+  // (docs/integrators.md, "HHT and NEWMARK"). addRateTerm adds B d to those rows of out.
+  virtual bool forceRowsAffineInRates() const { return false; }
+  virtual void addRateTerm(const Eigen::VectorXd& /*d*/, Eigen::VectorXd& /*out*/) const {}
 
   // Optional sparse Newton matrix (docs/theory.md, "Sparse Newton matrix"). A problem that
   // offers one returns true from sparse(), a matrix holding its fixed pattern from pattern()

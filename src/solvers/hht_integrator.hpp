@@ -92,8 +92,9 @@ class HhtIntegrator final : public Integrator {
   Eigen::VectorXd rowScale_, colScale_, slope_;
   double hJacobian_ = 0.0;
   bool haveJacobian_ = false, jacobianCurrent_ = false;
+  bool refreshNext_ = false;  // the last step converged slowly on an older matrix
 
-  Eigen::VectorXd yNew_, ypNew_, yPred_, ypPred_, g_, gOld_, dy_;
+  Eigen::VectorXd yNew_, ypNew_, yPred_, ypPred_, g_, gOld_, gOldPred_, dy_;
   int lastWorstEq_ = -1, lastWorstVar_ = -1;
   double lastWorstRes_ = 0.0, lastWorstChange_ = 0.0;
 };
