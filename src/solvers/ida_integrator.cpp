@@ -1,8 +1,10 @@
 #include "solvers/ida_integrator.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
+#include <vector>
 
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
@@ -43,6 +45,7 @@ constexpr double kRawResidualNoise = 1e-6;
 // rule above it reaches 10 s within 1.6e-6 m; 1e-2 and 1e-3 still stopped there, 1e-4 without
 // the round-off rule at t = 0.717 s; docs/integrators.md, "DSTIFF and ABAM").
 constexpr double kNewtonConvergence = 1e-4;
+constexpr double kVelocityWeightTime = 1e-300;
 
 struct IdaIntegrator::Engine {
   DaeProblem* problem = nullptr;
@@ -61,6 +64,8 @@ struct IdaIntegrator::Engine {
   // Largest balanced and unscaled residual at the predictor of the current Newton solve.
   double firstResidual = 0.0, firstRaw = 0.0;
   double previousChange = 0.0;  // weighted norm of the last change of the current solve
+  long evaluationsAtSolve = -1;  // jacobianEvaluations at the start of the current iteration
+  bool freshJacobian = false;    // the matrix in use was formed for this Newton solve
   // Newton matrix at the last Jacobian call, and its balanced factorisation.
   Eigen::MatrixXd jac;
   double cj = 1.0;
@@ -75,6 +80,11 @@ struct IdaIntegrator::Engine {
   Eigen::VectorXd rowScale, colScale, yWork, ypWork, gWork, rhs;
   long jacobianEvaluations = 0;
   std::string lastMessage;
+  // Error weights (IDAWFtolerances): rtol = ERROR, atol per unknown, and the index-2 factor
+  // of the velocities (kVelocityWeightTime).
+  double rtol = 0.0;
+  Eigen::VectorXd absTol;
+  std::vector<char> velocity;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -217,16 +227,36 @@ struct IdaIntegrator::Engine {
     const double previous = e->previousChange;
     e->previousChange = size;
     if (m == 0) {
+      e->freshJacobian = e->jacobianEvaluations != e->evaluationsAtSolve;
+      e->evaluationsAtSolve = e->jacobianEvaluations;
       e->firstResidual = balanced;
       e->firstRaw = raw;
       return verdict;
     }
     const bool stalled = verdict == SUN_NLS_CONV_RECVR || !(size < 0.9 * previous);
-    if (verdict != SUN_NLS_SUCCESS && stalled && std::isfinite(size) &&
+    if (verdict != SUN_NLS_SUCCESS && stalled && std::isfinite(size) && e->freshJacobian &&
         (balanced <= kResidualNoise * e->firstResidual || raw <= kRawResidualNoise * e->firstRaw)) {
       return SUN_NLS_SUCCESS;
     }
     return verdict;
+  }
+
+  // IDA's error weights 1 / (rtol |y_i| + atol_i), with the velocities' weight multiplied by
+  // min(1, h / kVelocityWeightTime): the index-2 scaling of Hairer and Wanner (docs/integrators.md,
+  // "DSTIFF and ABAM"). IDA calls this before every step with the step it is about to try.
+  static int errorWeights(N_Vector y, N_Vector ewt, void* user) {
+    auto* e = static_cast<Engine*>(user);
+    realtype h = 0.0;
+    IDAGetCurrentStep(e->ida, &h);
+    const double factor = std::min(1.0, std::abs(h) / kVelocityWeightTime);
+    const auto ys = view(y);
+    auto w = view(ewt);
+    for (Eigen::Index i = 0; i < ys.size(); ++i) {
+      const double tol = e->rtol * std::abs(ys(i)) + e->absTol(i);
+      if (!(tol > 0.0)) return -1;
+      w(i) = (e->velocity[i] && h != 0.0 ? factor : 1.0) / tol;
+    }
+    return 0;
   }
 
   static void errorHandler(int, const char*, const char*, char* message, void* user) {
@@ -273,7 +303,12 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   e.idaTestData = content->ctest_data;
   SUNNonlinSolSetConvTestFn(e.newton, &Engine::convergenceTest, &e);
   // ERROR is both relative and absolute, as GSTIFF's ERROR (1 + |y|) weighting.
-  IDASVtolerances(e.ida, settings_.error, e.atol);
+  e.rtol = settings_.error;
+  e.absTol = atol;
+  e.velocity.assign(n, 0);
+  for (int i = 0; i < n; ++i)
+    e.velocity[i] = problem_.role(i) == DaeProblem::Role::Velocity && problem_.errorControlled(i);
+  IDAWFtolerances(e.ida, &Engine::errorWeights);
   IDASetId(e.ida, e.id);
   IDASetSuppressAlg(e.ida, SUNTRUE);
 
