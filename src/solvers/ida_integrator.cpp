@@ -1,11 +1,5 @@
 #include "solvers/ida_integrator.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <string>
-#include <vector>
-
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -13,6 +7,12 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 #include <sunnonlinsol/sunnonlinsol_newton.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include "solvers/klu_linear_solver.hpp"
 
@@ -45,7 +45,8 @@ constexpr double kRawResidualNoise = 1e-6;
 // rule above it reaches 10 s within 1.6e-6 m; 1e-2 and 1e-3 still stopped there, 1e-4 without
 // the round-off rule at t = 0.717 s; docs/integrators.md, "DSTIFF and ABAM").
 constexpr double kNewtonConvergence = 1e-4;
-constexpr double kVelocityWeightTime = 1e-300;
+constexpr double kRoundOffUlps = 1000.0;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 struct IdaIntegrator::Engine {
   DaeProblem* problem = nullptr;
@@ -63,7 +64,7 @@ struct IdaIntegrator::Engine {
   void* idaTestData = nullptr;
   // Largest balanced and unscaled residual at the predictor of the current Newton solve.
   double firstResidual = 0.0, firstRaw = 0.0;
-  double previousChange = 0.0;  // weighted norm of the last change of the current solve
+  double previousChange = 0.0;   // weighted norm of the last change of the current solve
   long evaluationsAtSolve = -1;  // jacobianEvaluations at the start of the current iteration
   bool freshJacobian = false;    // the matrix in use was formed for this Newton solve
   // Newton matrix at the last Jacobian call, and its balanced factorisation.
@@ -84,7 +85,7 @@ struct IdaIntegrator::Engine {
   // of the velocities (kVelocityWeightTime).
   double rtol = 0.0;
   Eigen::VectorXd absTol;
-  std::vector<char> velocity;
+  std::vector<char> velocity, position;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -248,13 +249,18 @@ struct IdaIntegrator::Engine {
     auto* e = static_cast<Engine*>(user);
     realtype h = 0.0;
     IDAGetCurrentStep(e->ida, &h);
-    const double factor = std::min(1.0, std::abs(h) / kVelocityWeightTime);
     const auto ys = view(y);
+    double largestPosition = 0.0;
+    for (Eigen::Index i = 0; i < ys.size(); ++i)
+      if (e->position[i]) largestPosition = std::max(largestPosition, std::abs(ys(i)));
+    const double cj = h != 0.0 ? std::max(1.0, 1.0 / std::abs(h)) : 1.0;
     auto w = view(ewt);
     for (Eigen::Index i = 0; i < ys.size(); ++i) {
-      const double tol = e->rtol * std::abs(ys(i)) + e->absTol(i);
+      double tol = e->rtol * std::abs(ys(i)) + e->absTol(i);
+      if (e->velocity[i])
+        tol += kRoundOffUlps * kEps * (1.0 + std::max(std::abs(ys(i)), largestPosition)) * cj;
       if (!(tol > 0.0)) return -1;
-      w(i) = (e->velocity[i] && h != 0.0 ? factor : 1.0) / tol;
+      w(i) = 1.0 / tol;
     }
     return 0;
   }
@@ -306,8 +312,11 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   e.rtol = settings_.error;
   e.absTol = atol;
   e.velocity.assign(n, 0);
-  for (int i = 0; i < n; ++i)
+  e.position.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
     e.velocity[i] = problem_.role(i) == DaeProblem::Role::Velocity && problem_.errorControlled(i);
+    e.position[i] = problem_.role(i) == DaeProblem::Role::Position;
+  }
   IDAWFtolerances(e.ida, &Engine::errorWeights);
   IDASetId(e.ida, e.id);
   IDASetSuppressAlg(e.ida, SUNTRUE);
@@ -420,17 +429,33 @@ void IdaIntegrator::readStatistics() {
 void IdaIntegrator::recordFailure(int flag) {
   Engine& e = *engine_;
   switch (flag) {
-    case IDA_TOO_MUCH_WORK: outcome_ = IdaOutcome::TooMuchWork; break;
-    case IDA_TOO_MUCH_ACC: outcome_ = IdaOutcome::TooMuchAccuracy; break;
-    case IDA_ERR_FAIL: outcome_ = IdaOutcome::ErrorTestFailures; break;
-    case IDA_CONV_FAIL: outcome_ = IdaOutcome::ConvergenceFailures; break;
+    case IDA_TOO_MUCH_WORK:
+      outcome_ = IdaOutcome::TooMuchWork;
+      break;
+    case IDA_TOO_MUCH_ACC:
+      outcome_ = IdaOutcome::TooMuchAccuracy;
+      break;
+    case IDA_ERR_FAIL:
+      outcome_ = IdaOutcome::ErrorTestFailures;
+      break;
+    case IDA_CONV_FAIL:
+      outcome_ = IdaOutcome::ConvergenceFailures;
+      break;
     case IDA_LSETUP_FAIL:
-    case IDA_LSOLVE_FAIL: outcome_ = IdaOutcome::LinearSolverFailed; break;
+    case IDA_LSOLVE_FAIL:
+      outcome_ = IdaOutcome::LinearSolverFailed;
+      break;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
-    case IDA_FIRST_RES_FAIL: outcome_ = IdaOutcome::ResidualFailed; break;
-    case IDA_CONSTR_FAIL: outcome_ = IdaOutcome::ConstraintFailures; break;
-    default: outcome_ = IdaOutcome::OtherFailure; break;
+    case IDA_FIRST_RES_FAIL:
+      outcome_ = IdaOutcome::ResidualFailed;
+      break;
+    case IDA_CONSTR_FAIL:
+      outcome_ = IdaOutcome::ConstraintFailures;
+      break;
+    default:
+      outcome_ = IdaOutcome::OtherFailure;
+      break;
   }
   static const char* const kReasons[] = {
       "",
