@@ -45,6 +45,12 @@ constexpr double kRawResidualNoise = 1e-6;
 // rule above it reaches 10 s within 1.6e-6 m; 1e-2 and 1e-3 still stopped there, 1e-4 without
 // the round-off rule at t = 0.717 s; docs/integrators.md, "DSTIFF and ABAM").
 constexpr double kNewtonConvergence = 1e-4;
+// Two more rules of BdfIntegrator's corrector for a stalled iteration (docs/integrators.md,
+// "DSTIFF and ABAM", the flat passages of A02): it has converged when its weighted change is
+// below kStalledChange of the tolerance, or when every differential unknown's change is within
+// kRoundOffUlps ulps of the unknown (a velocity: of the largest position, times c_j, as the
+// velocities are recovered from the positions through c_j).
+constexpr double kStalledChange = 1e-1;
 constexpr double kRoundOffUlps = 1000.0;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -79,11 +85,13 @@ struct IdaIntegrator::Engine {
   Eigen::VectorXd rowScale, colScale, yWork, ypWork, gWork, rhs;
   long jacobianEvaluations = 0;
   std::string lastMessage;
-  // Error weights (IDAWFtolerances): rtol = ERROR, atol per unknown, and the index-2 factor
-  // of the velocities (kVelocityWeightTime).
+  // Error weights (IDAWFtolerances): rtol = ERROR and atol per unknown; the roles of the
+  // unknowns for the round-off floors; the weights of errorWeights() for this step, which
+  // every Newton solve starts from (a solve accepted at noise widens them, convergenceTest).
   double rtol = 0.0;
   Eigen::VectorXd absTol;
   std::vector<char> velocity, position;
+  Eigen::VectorXd baseWeights;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -226,26 +234,33 @@ struct IdaIntegrator::Engine {
     const double previous = e->previousChange;
     e->previousChange = size;
     if (m == 0) {
+      if (e->baseWeights.size() == view(ewt).size()) view(ewt) = e->baseWeights;
       e->firstResidual = balanced;
       e->firstRaw = raw;
       return verdict;
     }
     const bool stalled = verdict == SUN_NLS_CONV_RECVR || !(size < 0.9 * previous);
     if (verdict != SUN_NLS_SUCCESS && stalled && std::isfinite(size) &&
-        (balanced <= kResidualNoise * e->firstResidual || raw <= kRawResidualNoise * e->firstRaw ||
-         e->withinRoundOff(view(del)))) {
+        (size <= kStalledChange || balanced <= kResidualNoise * e->firstResidual ||
+         raw <= kRawResidualNoise * e->firstRaw || e->withinRoundOff(view(del)))) {
+      // The iterate carries noise of the size of its last change (the iteration no longer
+      // contracts), which IDA's error estimate, corrector minus predictor, would see: at A02's
+      // flat passages the velocities of the extra degrees of freedom carry noise of
+      // eps cond c_j from the nearly singular solves, growing as the step shrinks, and no step
+      // passed the error test. So the error test of this solve (IDA's ewt, restored at the
+      // next solve's first iteration) does not ask for less than that change.
+      auto w = view(ewt);
+      const auto d = view(del);
+      for (Eigen::Index i = 0; i < w.size(); ++i)
+        if (e->problem->differential(static_cast<int>(i)))
+          w(i) = 1.0 / (1.0 / w(i) + std::abs(d(i)));
       return SUN_NLS_SUCCESS;
     }
     return verdict;
   }
 
-  // IDA's error weights 1 / (rtol |y_i| + atol_i), with the velocities' weight multiplied by
-  // min(1, h / kVelocityWeightTime): the index-2 scaling of Hairer and Wanner (docs/integrators.md,
-  // "DSTIFF and ABAM"). IDA calls this before every step with the step it is about to try.
-  // The round-off floor of each unknown's Newton change, as BdfIntegrator::withinRoundOff:
-  // kRoundOffUlps ulps of the unknown, and for a velocity of the largest position, times cj
-  // (taken as 1/h, IDA's cj is about alpha_s / h): the velocities are recovered from the
-  // positions' round-off through c_j, so their noise grows as the step shrinks.
+  // The round-off floor of each unknown's Newton change, as BdfIntegrator::withinRoundOff
+  // (kRoundOffUlps), c_j taken as 1/h (IDA's c_j is alpha_s / h, alpha_s >= 1: the smaller).
   double largestPosition(const Eigen::Ref<const Eigen::VectorXd>& y) const {
     double largest = 0.0;
     for (Eigen::Index i = 0; i < y.size(); ++i)
@@ -273,22 +288,18 @@ struct IdaIntegrator::Engine {
     return true;
   }
 
-  // IDA's error weights 1 / (rtol |y_i| + atol_i), the velocities' tolerance widened by their
-  // round-off floor (roundOff): at a flat configuration of A02 the velocities of the extra
-  // degrees of freedom carry noise of eps cond / h from the nearly singular solves, and without
-  // the floor no step size passes the error test (docs/integrators.md, "DSTIFF and ABAM").
-  // IDA calls this before every step with the step it is about to try.
+  // IDA's error weights 1 / (rtol |y_i| + atol_i), as IDASVtolerances would set them; kept in
+  // baseWeights for convergenceTest. IDA calls this before every step.
   static int errorWeights(N_Vector y, N_Vector ewt, void* user) {
     auto* e = static_cast<Engine*>(user);
     const auto ys = view(y);
-    const double positionSize = e->largestPosition(ys), cjNow = e->currentCj();
     auto w = view(ewt);
     for (Eigen::Index i = 0; i < ys.size(); ++i) {
       double tol = e->rtol * std::abs(ys(i)) + e->absTol(i);
-      if (e->velocity[i]) tol += e->roundOff(i, ys(i), positionSize, cjNow);
       if (!(tol > 0.0)) return -1;
       w(i) = 1.0 / tol;
     }
+    e->baseWeights = w;
     return 0;
   }
 
@@ -341,7 +352,7 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   e.velocity.assign(n, 0);
   e.position.assign(n, 0);
   for (int i = 0; i < n; ++i) {
-    e.velocity[i] = problem_.role(i) == DaeProblem::Role::Velocity && problem_.errorControlled(i);
+    e.velocity[i] = problem_.role(i) == DaeProblem::Role::Velocity;
     e.position[i] = problem_.role(i) == DaeProblem::Role::Position;
   }
   IDAWFtolerances(e.ida, &Engine::errorWeights);
