@@ -87,11 +87,12 @@ struct IdaIntegrator::Engine {
   std::string lastMessage;
   // Error weights (IDAWFtolerances): rtol = ERROR and atol per unknown; the roles of the
   // unknowns for the round-off floors; the weights of errorWeights() for this step, which
-  // every Newton solve starts from (a solve accepted at noise widens them, convergenceTest).
+  // every Newton solve starts from (a solve accepted at noise widens them, convergenceTest);
+  // the sum of |change| of the current solve's iterations after the first.
   double rtol = 0.0;
   Eigen::VectorXd absTol;
   std::vector<char> velocity, position;
-  Eigen::VectorXd baseWeights;
+  Eigen::VectorXd baseWeights, laterChanges;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -235,25 +236,27 @@ struct IdaIntegrator::Engine {
     e->previousChange = size;
     if (m == 0) {
       if (e->baseWeights.size() == view(ewt).size()) view(ewt) = e->baseWeights;
+      e->laterChanges.setZero(view(del).size());
       e->firstResidual = balanced;
       e->firstRaw = raw;
       return verdict;
     }
     const bool stalled = verdict == SUN_NLS_CONV_RECVR || !(size < 0.9 * previous);
+    e->laterChanges += view(del).cwiseAbs();
     if (verdict != SUN_NLS_SUCCESS && stalled && std::isfinite(size) &&
         (size <= kStalledChange || balanced <= kResidualNoise * e->firstResidual ||
          raw <= kRawResidualNoise * e->firstRaw || e->withinRoundOff(view(del)))) {
-      // The iterate carries noise of the size of its last change (the iteration no longer
-      // contracts), which IDA's error estimate, corrector minus predictor, would see: at A02's
-      // flat passages the velocities of the extra degrees of freedom carry noise of
-      // eps cond c_j from the nearly singular solves, growing as the step shrinks, and no step
-      // passed the error test. So the error test of this solve (IDA's ewt, restored at the
-      // next solve's first iteration) does not ask for less than that change.
+      // The iterate carries the noise of the changes made after the first iteration (the
+      // iteration no longer contracts; the first change is the correction proper), which IDA's
+      // error estimate, corrector minus predictor, would see: at A02's flat passages the
+      // velocities of the extra degrees of freedom carry noise of eps cond c_j from the nearly
+      // singular solves, growing as the step shrinks, and no step passed the error test. So
+      // the error test of this solve (IDA's ewt, restored at the next solve's first
+      // iteration) does not ask for less than the sum of those changes (laterChanges).
       auto w = view(ewt);
-      const auto d = view(del);
       for (Eigen::Index i = 0; i < w.size(); ++i)
         if (e->problem->differential(static_cast<int>(i)))
-          w(i) = 1.0 / (1.0 / w(i) + std::abs(d(i)));
+          w(i) = 1.0 / (1.0 / w(i) + e->laterChanges(i));
       return SUN_NLS_SUCCESS;
     }
     return verdict;
