@@ -1,9 +1,5 @@
 #include "solvers/ida_integrator.hpp"
 
-#include <cmath>
-#include <limits>
-#include <string>
-
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -11,6 +7,12 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 #include <sunnonlinsol/sunnonlinsol_newton.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
 
 #include "solvers/klu_linear_solver.hpp"
 
@@ -43,6 +45,14 @@ constexpr double kRawResidualNoise = 1e-6;
 // rule above it reaches 10 s within 1.6e-6 m; 1e-2 and 1e-3 still stopped there, 1e-4 without
 // the round-off rule at t = 0.717 s; docs/integrators.md, "DSTIFF and ABAM").
 constexpr double kNewtonConvergence = 1e-4;
+// Two more rules of BdfIntegrator's corrector for a stalled iteration (docs/integrators.md,
+// "DSTIFF and ABAM", the flat passages of A02): it has converged when its weighted change is
+// below kStalledChange of the tolerance, or when every differential unknown's change is within
+// kRoundOffUlps ulps of the unknown (a velocity: of the largest position, times c_j, as the
+// velocities are recovered from the positions through c_j).
+constexpr double kStalledChange = 1e-1;
+constexpr double kRoundOffUlps = 1000.0;
+constexpr double kEps = std::numeric_limits<double>::epsilon();
 
 struct IdaIntegrator::Engine {
   DaeProblem* problem = nullptr;
@@ -75,6 +85,14 @@ struct IdaIntegrator::Engine {
   Eigen::VectorXd rowScale, colScale, yWork, ypWork, gWork, rhs;
   long jacobianEvaluations = 0;
   std::string lastMessage;
+  // Error weights (IDAWFtolerances): rtol = ERROR and atol per unknown; the roles of the
+  // unknowns for the round-off floors; the weights of errorWeights() for this step, which
+  // every Newton solve starts from (a solve accepted at noise widens them, convergenceTest);
+  // the sum of |change| of the current solve's iterations after the first.
+  double rtol = 0.0;
+  Eigen::VectorXd absTol;
+  std::vector<char> velocity, position;
+  Eigen::VectorXd baseWeights, laterChanges;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -217,16 +235,75 @@ struct IdaIntegrator::Engine {
     const double previous = e->previousChange;
     e->previousChange = size;
     if (m == 0) {
+      if (e->baseWeights.size() == view(ewt).size()) view(ewt) = e->baseWeights;
+      e->laterChanges.setZero(view(del).size());
       e->firstResidual = balanced;
       e->firstRaw = raw;
       return verdict;
     }
     const bool stalled = verdict == SUN_NLS_CONV_RECVR || !(size < 0.9 * previous);
+    e->laterChanges += view(del).cwiseAbs();
     if (verdict != SUN_NLS_SUCCESS && stalled && std::isfinite(size) &&
-        (balanced <= kResidualNoise * e->firstResidual || raw <= kRawResidualNoise * e->firstRaw)) {
+        (size <= kStalledChange || balanced <= kResidualNoise * e->firstResidual ||
+         raw <= kRawResidualNoise * e->firstRaw || e->withinRoundOff(view(del)))) {
+      // The iterate carries the noise of the changes made after the first iteration (the
+      // iteration no longer contracts; the first change is the correction proper), which IDA's
+      // error estimate, corrector minus predictor, would see: at A02's flat passages the
+      // velocities of the extra degrees of freedom carry noise of eps cond c_j from the nearly
+      // singular solves, growing as the step shrinks, and no step passed the error test. So
+      // the error test of this solve (IDA's ewt, restored at the next solve's first
+      // iteration) does not ask for less than the sum of those changes (laterChanges).
+      auto w = view(ewt);
+      for (Eigen::Index i = 0; i < w.size(); ++i)
+        if (e->problem->differential(static_cast<int>(i)))
+          w(i) = 1.0 / (1.0 / w(i) + e->laterChanges(i));
       return SUN_NLS_SUCCESS;
     }
     return verdict;
+  }
+
+  // The round-off floor of each unknown's Newton change, as BdfIntegrator::withinRoundOff
+  // (kRoundOffUlps), c_j taken as 1/h (IDA's c_j is alpha_s / h, alpha_s >= 1: the smaller).
+  double largestPosition(const Eigen::Ref<const Eigen::VectorXd>& y) const {
+    double largest = 0.0;
+    for (Eigen::Index i = 0; i < y.size(); ++i)
+      if (position[i]) largest = std::max(largest, std::abs(y(i)));
+    return largest;
+  }
+  double currentCj() const {
+    realtype h = 0.0;
+    IDAGetCurrentStep(ida, &h);
+    return h != 0.0 ? std::max(1.0, 1.0 / std::abs(h)) : 1.0;
+  }
+  double roundOff(Eigen::Index i, double yi, double positionSize, double cjNow) const {
+    return velocity[i] ? kRoundOffUlps * kEps * (1.0 + std::max(std::abs(yi), positionSize)) * cjNow
+                       : kRoundOffUlps * kEps * (1.0 + std::abs(yi));
+  }
+  // Every differential unknown's last change (del) at or below its round-off floor at the
+  // iterate it was computed from (yWork, the residual's argument): nothing left to converge.
+  bool withinRoundOff(const Eigen::Ref<const Eigen::VectorXd>& del) const {
+    if (yWork.size() != del.size()) return false;
+    const double positionSize = largestPosition(yWork), cjNow = currentCj();
+    for (Eigen::Index i = 0; i < del.size(); ++i)
+      if (problem->differential(static_cast<int>(i)) &&
+          !(std::abs(del(i)) <= roundOff(i, yWork(i), positionSize, cjNow)))
+        return false;
+    return true;
+  }
+
+  // IDA's error weights 1 / (rtol |y_i| + atol_i), as IDASVtolerances would set them; kept in
+  // baseWeights for convergenceTest. IDA calls this before every step.
+  static int errorWeights(N_Vector y, N_Vector ewt, void* user) {
+    auto* e = static_cast<Engine*>(user);
+    const auto ys = view(y);
+    auto w = view(ewt);
+    for (Eigen::Index i = 0; i < ys.size(); ++i) {
+      double tol = e->rtol * std::abs(ys(i)) + e->absTol(i);
+      if (!(tol > 0.0)) return -1;
+      w(i) = 1.0 / tol;
+    }
+    e->baseWeights = w;
+    return 0;
   }
 
   static void errorHandler(int, const char*, const char*, char* message, void* user) {
@@ -273,7 +350,15 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   e.idaTestData = content->ctest_data;
   SUNNonlinSolSetConvTestFn(e.newton, &Engine::convergenceTest, &e);
   // ERROR is both relative and absolute, as GSTIFF's ERROR (1 + |y|) weighting.
-  IDASVtolerances(e.ida, settings_.error, e.atol);
+  e.rtol = settings_.error;
+  e.absTol = atol;
+  e.velocity.assign(n, 0);
+  e.position.assign(n, 0);
+  for (int i = 0; i < n; ++i) {
+    e.velocity[i] = problem_.role(i) == DaeProblem::Role::Velocity;
+    e.position[i] = problem_.role(i) == DaeProblem::Role::Position;
+  }
+  IDAWFtolerances(e.ida, &Engine::errorWeights);
   IDASetId(e.ida, e.id);
   IDASetSuppressAlg(e.ida, SUNTRUE);
 
@@ -385,17 +470,33 @@ void IdaIntegrator::readStatistics() {
 void IdaIntegrator::recordFailure(int flag) {
   Engine& e = *engine_;
   switch (flag) {
-    case IDA_TOO_MUCH_WORK: outcome_ = IdaOutcome::TooMuchWork; break;
-    case IDA_TOO_MUCH_ACC: outcome_ = IdaOutcome::TooMuchAccuracy; break;
-    case IDA_ERR_FAIL: outcome_ = IdaOutcome::ErrorTestFailures; break;
-    case IDA_CONV_FAIL: outcome_ = IdaOutcome::ConvergenceFailures; break;
+    case IDA_TOO_MUCH_WORK:
+      outcome_ = IdaOutcome::TooMuchWork;
+      break;
+    case IDA_TOO_MUCH_ACC:
+      outcome_ = IdaOutcome::TooMuchAccuracy;
+      break;
+    case IDA_ERR_FAIL:
+      outcome_ = IdaOutcome::ErrorTestFailures;
+      break;
+    case IDA_CONV_FAIL:
+      outcome_ = IdaOutcome::ConvergenceFailures;
+      break;
     case IDA_LSETUP_FAIL:
-    case IDA_LSOLVE_FAIL: outcome_ = IdaOutcome::LinearSolverFailed; break;
+    case IDA_LSOLVE_FAIL:
+      outcome_ = IdaOutcome::LinearSolverFailed;
+      break;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
-    case IDA_FIRST_RES_FAIL: outcome_ = IdaOutcome::ResidualFailed; break;
-    case IDA_CONSTR_FAIL: outcome_ = IdaOutcome::ConstraintFailures; break;
-    default: outcome_ = IdaOutcome::OtherFailure; break;
+    case IDA_FIRST_RES_FAIL:
+      outcome_ = IdaOutcome::ResidualFailed;
+      break;
+    case IDA_CONSTR_FAIL:
+      outcome_ = IdaOutcome::ConstraintFailures;
+      break;
+    default:
+      outcome_ = IdaOutcome::OtherFailure;
+      break;
   }
   static const char* const kReasons[] = {
       "",
