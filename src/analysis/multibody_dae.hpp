@@ -65,6 +65,8 @@ class MultibodyDae : public solvers::DaeProblem {
   // counted in patternRepairs()), so a pattern rule that misses a dependency costs speed, not
   // convergence.
   bool sparse() const override { return true; }
+  // A CONTACT's entries are exact zeros while its solids are apart and turn up at each onset.
+  bool zerosPersist() const override { return system_.model().contacts.empty(); }
   const Eigen::SparseMatrix<double>* pattern() override;
   void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
                           Eigen::SparseMatrix<double>& jac) override;

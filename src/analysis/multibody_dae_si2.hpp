@@ -34,6 +34,7 @@ class MultibodyDaeSi2 : public solvers::DaeProblem {
   // every evaluation is checked against one exact directional derivative of the index-3 rows;
   // rows found outside the pattern are made dense and the matrix falls back to the differences.
   bool sparse() const override { return true; }
+  bool zerosPersist() const override { return i3_.zerosPersist(); }
   const Eigen::SparseMatrix<double>* pattern() override;
   void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
                           Eigen::SparseMatrix<double>& jac) override;

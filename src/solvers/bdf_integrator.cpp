@@ -318,7 +318,10 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       for (int c = 0; c < sparseJac_.outerSize(); ++c)
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
-      sparseSolver_.factor(sparseJac_);
+      // Exact zeros left out of the factorisation where they persist (nonzero_pattern.hpp).
+      bool grew = false;
+      sparseSolver_.factor(problem_.zerosPersist() ? nonzero_.select(sparseJac_, &grew)
+                                                   : sparseJac_);
       stats_.sparseAnalyses = sparseSolver_.analyses();
       stats_.fullFactorizations = sparseSolver_.fullFactorizations();
       stats_.refactorizations = sparseSolver_.refactorizations();

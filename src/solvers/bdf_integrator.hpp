@@ -12,6 +12,7 @@
 
 #include "solvers/dae_problem.hpp"
 #include "solvers/dense_linear_solver.hpp"
+#include "solvers/nonzero_pattern.hpp"
 #include "solvers/integrator.hpp"
 #include "solvers/multistep_settings.hpp"
 #include "solvers/sparse_linear_solver.hpp"
@@ -109,6 +110,7 @@ class BdfIntegrator final : public Integrator {
   bool sparse_ = false;
   Eigen::MatrixXd jac_;
   Eigen::SparseMatrix<double> sparseJac_;
+  NonzeroPattern nonzero_;  // the entries of sparseJac_ factorised
   DenseLinearSolver dense_;
   SparseLinearSolver sparseSolver_;
   LinearSolver* solver_ = &dense_;

@@ -53,6 +53,10 @@ class DaeProblem {
   // newtonMatrixSparse. It may widen the pattern when it finds an entry outside it (jac then
   // has the new pattern, which pattern() returns from then on).
   virtual bool sparse() const { return false; }
+  // Whether entries of the sparse Newton matrix that are exactly zero tend to stay zero, so
+  // that the BDF family may factorise without them (solvers/nonzero_pattern.hpp). False where
+  // elements switch on and off (contacts), whose entries would keep turning up.
+  virtual bool zerosPersist() const { return true; }
   virtual const Eigen::SparseMatrix<double>* pattern() { return nullptr; }
   virtual void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
                                   double cj, Eigen::SparseMatrix<double>& jac) {
