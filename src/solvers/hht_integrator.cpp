@@ -173,7 +173,9 @@ void HhtIntegrator::formSparseNewtonMatrix(double tNew) {
       j[e] = rowScale_(r) * (aShifted + slope_(c) * (j[e] - a[e])) * colScale_(c);
     }
   }
-  klu_.factor(sparseJac_);
+  // Exact zeros left out of the factorisation where they persist (nonzero_pattern.hpp).
+  bool grew = false;
+  klu_.factor(problem_.zerosPersist() ? nonzero_.select(sparseJac_, &grew) : sparseJac_);
 }
 
 void HhtIntegrator::solveNewton(Eigen::VectorXd& x) {

@@ -16,6 +16,7 @@
 #include "solvers/dae_problem.hpp"
 #include "solvers/integrator.hpp"
 #include "solvers/klu_linear_solver.hpp"
+#include "solvers/nonzero_pattern.hpp"
 
 namespace openmss::solvers {
 
@@ -88,6 +89,7 @@ class HhtIntegrator final : public Integrator {
   // the problem's pattern, factorised by klu_ with its pivots reused while they serve.
   bool sparse_ = false;
   Eigen::SparseMatrix<double> sparseA_, sparseJac_;
+  NonzeroPattern nonzero_;  // the entries of sparseJac_ factorised
   KluLinearSolver klu_;
   Eigen::VectorXd rowScale_, colScale_, slope_;
   double hJacobian_ = 0.0;
