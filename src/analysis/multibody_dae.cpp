@@ -7,15 +7,12 @@ namespace {
 
 const char* bodyEntry(int offset, bool equation) {
   using L = mechanics::StateLayout;
-  static const char* vars[L::kPerBody] = {"X",  "Y",  "Z",  "E0", "E1", "E2", "E3",
+  static const char* vars[L::kPerBody] = {"X", "Y", "Z", "E0", "E1", "E2", "E3",
                                           "VX", "VY", "VZ", "WX", "WY", "WZ", "MU"};
-  static const char* eqs[L::kPerBody] = {"dX/dt = VX",       "dY/dt = VY",
-                                         "dZ/dt = VZ",       "dE0/dt",
-                                         "dE1/dt",           "dE2/dt",
-                                         "dE3/dt",           "force balance X",
-                                         "force balance Y",  "force balance Z",
-                                         "moment balance X", "moment balance Y",
-                                         "moment balance Z", "Euler-parameter normalisation"};
+  static const char* eqs[L::kPerBody] = {
+      "dX/dt = VX", "dY/dt = VY", "dZ/dt = VZ", "dE0/dt", "dE1/dt", "dE2/dt", "dE3/dt",
+      "force balance X", "force balance Y", "force balance Z", "moment balance X",
+      "moment balance Y", "moment balance Z", "Euler-parameter normalisation"};
   return equation ? eqs[offset] : vars[offset];
 }
 
@@ -27,8 +24,7 @@ std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, in
   if (l.isUserDifferential(i)) {
     const int k = i - l.userDiff(0);
     if (k < nd)
-      return (equation ? "dDIF/dt = DIF1 of DIFF/" : "DIF of DIFF/") +
-             std::to_string(m.diffs[k].id);
+      return (equation ? "dDIF/dt = DIF1 of DIFF/" : "DIF of DIFF/") + std::to_string(m.diffs[k].id);
     for (const auto& e : m.linearStates)
       if (k >= e.firstState && k < e.firstState + e.a.rows())
         return std::string(equation ? "state equation " : "state ") +
@@ -42,8 +38,7 @@ std::string userEntry(const mechanics::StateLayout& l, const model::Model& m, in
     return "user state";
   }
   const int k = i - l.userAlg(0);
-  if (k < nv)
-    return "VARIABLE/" + std::to_string(m.variables[k].id) + (equation ? " function" : "");
+  if (k < nv) return "VARIABLE/" + std::to_string(m.variables[k].id) + (equation ? " function" : "");
   for (const auto& e : m.generalStates)  // GSE outputs, after the DIFF derivatives
     if (k >= e.firstOutput && k < e.firstOutput + e.no)
       return std::string(equation ? "output equation " : "output ") +
@@ -128,8 +123,9 @@ void MultibodyDae::updateNearPattern(const Eigen::VectorXd& y) {
   ++rebuilds_;
 }
 
-void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                                      double cj, Eigen::SparseMatrix<double>& jac) {
+void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
+                                      const Eigen::VectorXd& yp, double cj,
+                                      Eigen::SparseMatrix<double>& jac) {
   pattern();
   if (nearContacts_) updateNearPattern(y);
   // The caller's matrix takes the current pattern when its structure differs (a near-pair

@@ -68,8 +68,8 @@ class MultibodyDae : public solvers::DaeProblem {
   // A CONTACT's entries are exact zeros while its solids are apart and turn up at each onset.
   bool zerosPersist() const override { return system_.model().contacts.empty(); }
   const Eigen::SparseMatrix<double>* pattern() override;
-  void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
-                          Eigen::SparseMatrix<double>& jac) override;
+  void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
+                          double cj, Eigen::SparseMatrix<double>& jac) override;
   const mechanics::JacobianPattern& jacobianPattern() {
     pattern();
     return pattern_;

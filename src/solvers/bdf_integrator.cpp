@@ -319,9 +319,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         for (Eigen::SparseMatrix<double>::InnerIterator e(sparseJac_, c); e; ++e)
           e.valueRef() = rowScale_(e.row()) * e.value() * colScale_(c);
       // Exact zeros left out of the factorisation where they persist (nonzero_pattern.hpp).
-      bool grew = false;
-      sparseSolver_.factor(problem_.zerosPersist() ? nonzero_.select(sparseJac_, &grew)
-                                                   : sparseJac_);
+      sparseSolver_.factor(problem_.zerosPersist() ? nonzero_.select(sparseJac_) : sparseJac_);
       stats_.sparseAnalyses = sparseSolver_.analyses();
       stats_.fullFactorizations = sparseSolver_.fullFactorizations();
       stats_.refactorizations = sparseSolver_.refactorizations();

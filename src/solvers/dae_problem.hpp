@@ -3,9 +3,10 @@
 // G(t, y, y') = 0, its Newton matrix dG/dy + cj dG/dy', and names for diagnostics. GSTIFF-,
 // DASSL- and HHT-style methods all work through it.
 
+#include <string>
+
 #include <Eigen/Dense>
 #include <Eigen/SparseCore>
-#include <string>
 
 namespace openmss::solvers {
 
@@ -54,7 +55,7 @@ class DaeProblem {
   // has the new pattern, which pattern() returns from then on).
   virtual bool sparse() const { return false; }
   // Whether entries of the sparse Newton matrix that are exactly zero tend to stay zero, so
-  // that the BDF family may factorise without them (solvers/nonzero_pattern.hpp). False where
+  // that the BDF and HHT integrators may factorise without them (solvers/nonzero_pattern.hpp). False where
   // elements switch on and off (contacts), whose entries would keep turning up.
   virtual bool zerosPersist() const { return true; }
   virtual const Eigen::SparseMatrix<double>* pattern() { return nullptr; }

@@ -174,8 +174,7 @@ void HhtIntegrator::formSparseNewtonMatrix(double tNew) {
     }
   }
   // Exact zeros left out of the factorisation where they persist (nonzero_pattern.hpp).
-  bool grew = false;
-  klu_.factor(problem_.zerosPersist() ? nonzero_.select(sparseJac_, &grew) : sparseJac_);
+  klu_.factor(problem_.zerosPersist() ? nonzero_.select(sparseJac_) : sparseJac_);
 }
 
 void HhtIntegrator::solveNewton(Eigen::VectorXd& x) {

@@ -1,5 +1,11 @@
 #include "solvers/ida_integrator.hpp"
 
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -7,12 +13,6 @@
 #include <sunmatrix/sunmatrix_dense.h>
 #include <sunmatrix/sunmatrix_sparse.h>
 #include <sunnonlinsol/sunnonlinsol_newton.h>
-
-#include <algorithm>
-#include <cmath>
-#include <limits>
-#include <string>
-#include <vector>
 
 #include "solvers/klu_linear_solver.hpp"
 
@@ -470,33 +470,17 @@ void IdaIntegrator::readStatistics() {
 void IdaIntegrator::recordFailure(int flag) {
   Engine& e = *engine_;
   switch (flag) {
-    case IDA_TOO_MUCH_WORK:
-      outcome_ = IdaOutcome::TooMuchWork;
-      break;
-    case IDA_TOO_MUCH_ACC:
-      outcome_ = IdaOutcome::TooMuchAccuracy;
-      break;
-    case IDA_ERR_FAIL:
-      outcome_ = IdaOutcome::ErrorTestFailures;
-      break;
-    case IDA_CONV_FAIL:
-      outcome_ = IdaOutcome::ConvergenceFailures;
-      break;
+    case IDA_TOO_MUCH_WORK: outcome_ = IdaOutcome::TooMuchWork; break;
+    case IDA_TOO_MUCH_ACC: outcome_ = IdaOutcome::TooMuchAccuracy; break;
+    case IDA_ERR_FAIL: outcome_ = IdaOutcome::ErrorTestFailures; break;
+    case IDA_CONV_FAIL: outcome_ = IdaOutcome::ConvergenceFailures; break;
     case IDA_LSETUP_FAIL:
-    case IDA_LSOLVE_FAIL:
-      outcome_ = IdaOutcome::LinearSolverFailed;
-      break;
+    case IDA_LSOLVE_FAIL: outcome_ = IdaOutcome::LinearSolverFailed; break;
     case IDA_RES_FAIL:
     case IDA_REP_RES_ERR:
-    case IDA_FIRST_RES_FAIL:
-      outcome_ = IdaOutcome::ResidualFailed;
-      break;
-    case IDA_CONSTR_FAIL:
-      outcome_ = IdaOutcome::ConstraintFailures;
-      break;
-    default:
-      outcome_ = IdaOutcome::OtherFailure;
-      break;
+    case IDA_FIRST_RES_FAIL: outcome_ = IdaOutcome::ResidualFailed; break;
+    case IDA_CONSTR_FAIL: outcome_ = IdaOutcome::ConstraintFailures; break;
+    default: outcome_ = IdaOutcome::OtherFailure; break;
   }
   static const char* const kReasons[] = {
       "",

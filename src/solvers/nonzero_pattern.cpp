@@ -48,7 +48,7 @@ const Eigen::SparseMatrix<double>& NonzeroPattern::select(const Eigen::SparseMat
   }
   double* out = selected_.valuePtr();
   for (size_t j = 0; j < source_.size(); ++j) out[j] = value[source_[j]];
-  *grew = changed;
+  if (grew != nullptr) *grew = changed;
   return selected_;
 }
 

@@ -16,9 +16,10 @@ namespace openmss::solvers {
 class NonzeroPattern {
  public:
   // The entries of `full` (compressed) that have been nonzero since its structure last
-  // changed, with full's current values. `grew` tells whether the selection gained entries.
-  const Eigen::SparseMatrix<double>& select(const Eigen::SparseMatrix<double>& full, bool* grew);
-  void reset() { outer_.clear(); }
+  // changed, with full's current values. `grew`, if given, tells whether the selection
+  // changed (and so needs a new analysis).
+  const Eigen::SparseMatrix<double>& select(const Eigen::SparseMatrix<double>& full,
+                                            bool* grew = nullptr);
   // After this many growths on one structure the selection takes the whole structure: entries
   // that keep turning up (a force that switches on and off) would otherwise cost an analysis
   // and a full factorisation each time.

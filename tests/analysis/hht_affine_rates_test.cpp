@@ -14,6 +14,7 @@
 #include "analysis/multibody_dae.hpp"
 #include "solvers/hht_integrator.hpp"
 #include "support/bdf_run.hpp"
+#include "support/forwarding_problem.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -48,35 +49,17 @@ std::string chain(const std::string& extraForce) {
   return s.str();
 }
 
-// The same equations with the shortcut withheld: every other question goes to the inner problem.
-class TwoResidualProblem final : public solvers::DaeProblem {
+// The same equations with the shortcut withheld; the sparse matrix forwarded, so that both runs
+// take the KLU path.
+class TwoResidualProblem final : public testing::ForwardingProblem {
  public:
-  explicit TwoResidualProblem(MultibodyDae& inner) : inner_(inner) {}
-  int size() const override { return inner_.size(); }
-  void residual(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
-                Eigen::VectorXd& g) override {
-    inner_.residual(t, y, yp, g);
-  }
-  void newtonMatrix(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
-                    Eigen::MatrixXd& jac) override {
-    inner_.newtonMatrix(t, y, yp, cj, jac);
-  }
-  bool differential(int i) const override { return inner_.differential(i); }
-  bool errorControlled(int i) const override { return inner_.errorControlled(i); }
-  int rowScaleExponent(int i) const override { return inner_.rowScaleExponent(i); }
-  int unknownScaleExponent(int i) const override { return inner_.unknownScaleExponent(i); }
-  Role role(int i) const override { return inner_.role(i); }
-  std::string equationName(int row) const override { return inner_.equationName(row); }
-  std::string variableName(int i) const override { return inner_.variableName(i); }
+  using ForwardingProblem::ForwardingProblem;
   bool sparse() const override { return inner_.sparse(); }
   const Eigen::SparseMatrix<double>* pattern() override { return inner_.pattern(); }
   void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
                           Eigen::SparseMatrix<double>& jac) override {
     inner_.newtonMatrixSparse(t, y, yp, cj, jac);
   }
-
- private:
-  MultibodyDae& inner_;
 };
 
 struct Outcome {
