@@ -120,6 +120,7 @@ void MultibodyDae::updateNearPattern(const Eigen::VectorXd& y) {
   for (int e : broadPhase_.nearWithin(y.data(), kEnter)) contacts[e] = 1;
   pattern_ = mechanics::newtonMatrixPattern(system_, contacts);
   patternMatrix_ = pattern_.matrix();
+  guard_.patternChanged();
   ++rebuilds_;
 }
 
@@ -136,9 +137,11 @@ void MultibodyDae::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
       std::equal(pattern_.rowIndex.begin(), pattern_.rowIndex.end(), jac.innerIndexPtr());
   if (!same) jac = patternMatrix_;
   system_.newtonMatrixSparse(t, y, yp, cj, pattern_, jac, work_);
+  if (!guard_.due()) return;
   const std::vector<int> outside = system_.rowsOutsidePattern(t, y, yp, cj, jac, work_);
   if (outside.empty()) return;
   ++repairs_;
+  guard_.patternChanged();
   mechanics::makeRowsDense(pattern_, outside);
   patternMatrix_ = pattern_.matrix();
   jac = patternMatrix_;

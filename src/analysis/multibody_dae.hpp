@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "analysis/pattern_guard.hpp"
 #include "mechanics/contact/contact_broad_phase.hpp"
 #include "mechanics/coupled_accelerations.hpp"
 #include "mechanics/multibody_system.hpp"
@@ -18,7 +19,8 @@ class MultibodyDae : public solvers::DaeProblem {
   explicit MultibodyDae(const mechanics::MultibodySystem& system, bool nearContactPattern = true)
       : system_(system),
         nearContacts_(nearContactPattern && !system.model().contacts.empty()),
-        affineInRates_(!mechanics::readsAccelerationsOrReactions(system.model())) {
+        affineInRates_(!mechanics::readsAccelerationsOrReactions(system.model())),
+        guard_(!system.model().contacts.empty()) {
     if (nearContacts_) broadPhase_ = {system.model(), system.layout()};
   }
 
@@ -60,10 +62,10 @@ class MultibodyDae : public solvers::DaeProblem {
   void addRateTerm(const Eigen::VectorXd& d, Eigen::VectorXd& out) const override;
 
   // The sparse Newton matrix: structural pattern and compressed forward AD
-  // (mechanics/jacobian_pattern.hpp). Every evaluation is checked against one exact
-  // directional derivative; rows where an entry falls outside the pattern are made dense (and
-  // counted in patternRepairs()), so a pattern rule that misses a dependency costs speed, not
-  // convergence.
+  // (mechanics/jacobian_pattern.hpp). Evaluations are checked against one exact directional
+  // derivative (every one with CONTACT, otherwise on PatternGuard's schedule); rows where an
+  // entry falls outside the pattern are made dense (and counted in patternRepairs()), so a
+  // pattern rule that misses a dependency costs speed, not convergence.
   bool sparse() const override { return true; }
   // A CONTACT's entries are exact zeros while its solids are apart and turn up at each onset.
   bool zerosPersist() const override { return system_.model().contacts.empty(); }
@@ -75,6 +77,9 @@ class MultibodyDae : public solvers::DaeProblem {
     return pattern_;
   }
   int patternRepairs() const { return repairs_; }
+  // Matrices checked by the guard, and a switch to check every one (tests).
+  long patternChecks() const { return guard_.checks(); }
+  void checkEveryMatrix(bool always) { guard_.checkEveryMatrix(always); }
   // Near-pair patterns built (the first one included); 0 without the near-pair pattern.
   int patternRebuilds() const { return rebuilds_; }
 
@@ -103,6 +108,7 @@ class MultibodyDae : public solvers::DaeProblem {
   mechanics::SparseJacobianWork work_;
   bool havePattern_ = false;
   int repairs_ = 0;
+  PatternGuard guard_;
 };
 
 }  // namespace openmss::analysis

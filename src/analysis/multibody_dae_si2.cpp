@@ -88,10 +88,12 @@ void MultibodyDaeSi2::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
     return;
   }
   work_.local->assemble(t, y, yp, cj, jac.valuePtr(), work_);
+  if (!guard_.due()) return;
   const std::vector<int> outside = rowsOutsidePattern(t, y, yp, cj, jac);
   if (outside.empty()) return;
   // A dependency the pattern rules missed: those rows dense, and from now on the fallback.
   ++repairs_;
+  guard_.patternChanged();
   lastElementLocal_ = false;
   mechanics::makeRowsDense(pattern_, outside);
   patternMatrix_ = pattern_.matrix();

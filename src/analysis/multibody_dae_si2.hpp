@@ -17,7 +17,7 @@ namespace openmss::analysis {
 class MultibodyDaeSi2 : public solvers::DaeProblem {
  public:
   explicit MultibodyDaeSi2(const mechanics::MultibodySystem& system)
-      : system_(system), i3_(system, false) {}  // the SI2 pattern is built once: every CONTACT
+      : system_(system), i3_(system, false), guard_(!system.model().contacts.empty()) {}  // the SI2 pattern is built once: every CONTACT
 
   int baseSize() const { return system_.layout().size(); }
   int size() const override { return baseSize() + system_.layout().constraintEquations; }
@@ -39,6 +39,9 @@ class MultibodyDaeSi2 : public solvers::DaeProblem {
   void newtonMatrixSparse(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
                           Eigen::SparseMatrix<double>& jac) override;
   int patternRepairs() const { return repairs_; }
+  // Matrices checked by the guard (PatternGuard: every one with CONTACT).
+  long patternChecks() const { return guard_.checks(); }
+  void checkEveryMatrix(bool always) { guard_.checkEveryMatrix(always); }
   // Whether the last sparse matrix came from the element-local assembly (not the fallback).
   bool lastElementLocal() const { return lastElementLocal_; }
   void newtonMatrixByDifferences(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp,
@@ -79,6 +82,7 @@ class MultibodyDaeSi2 : public solvers::DaeProblem {
   mutable std::vector<double> rowValues_;
   bool havePattern_ = false, lastElementLocal_ = false;
   int repairs_ = 0;
+  PatternGuard guard_;
 };
 
 }  // namespace openmss::analysis

@@ -248,6 +248,7 @@ double controlledDifference(const MultibodyDaeSi2& dae, const Eigen::VectorXd& a
 TEST(Si2SparseIntegration, DstiffKluPathFollowsTheDenseLuPath) {
   Chain chain(8);
   MultibodyDaeSi2 sparseDae(*chain.system);
+  sparseDae.checkEveryMatrix(true);  // the no-repair assertion below covers every matrix
   openmss::testing::DenseOnlyProblem denseDae(sparseDae);
   ASSERT_GE(sparseDae.size(), solvers::BdfIntegrator::kSparseThreshold);
   solvers::MultistepSettings settings;

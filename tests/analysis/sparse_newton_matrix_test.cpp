@@ -275,6 +275,7 @@ TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
   settings.error = 1e-6;
   settings.hmax = 0.01;
   MultibodyDae sparseDae(s);
+  sparseDae.checkEveryMatrix(true);  // the no-repair assertion below covers every matrix
   openmss::testing::DenseOnlyProblem denseDae(sparseDae);
   {
     // The problem's own matrices at the start, through the DaeProblem interface.
@@ -310,6 +311,52 @@ TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
             << " (steps " << sparse.statistics().steps << " vs " << dense.statistics().steps
             << ")\n";
   EXPECT_LE(difference, 1e-7);
+}
+
+TEST(SparseNewtonMatrix, GuardScheduleChecksTheFirstMatricesThenEveryEighth) {
+  PatternGuard guard;
+  std::vector<long> checked;
+  for (long k = 1; k <= 40; ++k)
+    if (guard.due()) checked.push_back(k);
+  EXPECT_EQ(checked, (std::vector<long>{1, 2, 3, 4, 5, 6, 7, 8, 16, 24, 32, 40}));
+  guard.patternChanged();  // a new pattern: its first matrices one by one again
+  for (long k = 1; k <= 8; ++k) EXPECT_TRUE(guard.due()) << k;
+  EXPECT_FALSE(guard.due());
+  EXPECT_EQ(guard.checks(), 20);
+  PatternGuard always(true);
+  for (int k = 0; k < 20; ++k) EXPECT_TRUE(always.due());
+}
+
+// The guard's schedule changes which matrices are checked, never a matrix: a run with the
+// scheduled checks is bit-identical to one that checks every matrix, with fewer checks.
+TEST(SparseNewtonMatrix, ScheduledGuardLeavesTheRunBitIdentical) {
+  model::Model m;
+  ASSERT_TRUE(modelFromText(chainDataset(12, false), m));
+  MultibodySystem s(m);
+  Eigen::VectorXd y = s.initialState(), yp = Eigen::VectorXd::Zero(s.layout().size());
+  mechanics::removeRedundantConstraints(s, y);
+  ASSERT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged);
+  mechanics::solveVelocities(s, 0.0, y);
+  ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
+  solvers::MultistepSettings settings;
+  settings.error = 1e-6;
+  settings.hmax = 0.01;
+  MultibodyDae scheduled(s), everyOne(s);
+  everyOne.checkEveryMatrix(true);
+  solvers::BdfIntegrator a(scheduled, settings), b(everyOne, settings);
+  a.start(0.0, y, yp);
+  b.start(0.0, y, yp);
+  ASSERT_TRUE(a.advanceTo(1.0)) << a.failure().reason;
+  ASSERT_TRUE(b.advanceTo(1.0)) << b.failure().reason;
+  const long matrices = b.statistics().jacobianEvaluations;
+  ASSERT_GT(matrices, PatternGuard::kEveryMatrix + PatternGuard::kPeriod);  // the schedule acts
+  EXPECT_EQ(everyOne.patternChecks(), matrices);
+  EXPECT_EQ(scheduled.patternChecks(),
+            PatternGuard::kEveryMatrix + (matrices / PatternGuard::kPeriod - 1));
+  EXPECT_EQ(scheduled.patternRepairs(), 0);
+  EXPECT_EQ(everyOne.patternRepairs(), 0);
+  EXPECT_EQ(a.statistics().steps, b.statistics().steps);
+  EXPECT_TRUE(a.y() == b.y());  // bitwise
 }
 
 }  // namespace
