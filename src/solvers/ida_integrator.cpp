@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <deque>
 #include <limits>
 #include <string>
 #include <vector>
@@ -93,6 +94,17 @@ struct IdaIntegrator::Engine {
   Eigen::VectorXd absTol;
   std::vector<char> velocity, position;
   Eigen::VectorXd baseWeights, laterChanges;
+  // The noise the predictor carries (docs/integrators.md, "DSTIFF and ABAM", noise rules): the
+  // accepted solutions, most recent first (kHistory of them), their times and the noise of their
+  // solves (laterChanges of a solve accepted by a stall rule, spread over its role; empty for a
+  // solve that converged), and, for the solve under way, the predictor's share of that noise
+  // (empty when none of the solutions it interpolates is noisy). solveAtNoise: the solve under
+  // way was accepted by a stall rule.
+  static constexpr size_t kHistory = 6;  // IDA's largest order, 5, plus one
+  std::deque<double> acceptedTimes;
+  std::deque<Eigen::VectorXd> acceptedNoise;
+  Eigen::VectorXd predictorNoise;
+  bool solveAtNoise = false;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -239,6 +251,9 @@ struct IdaIntegrator::Engine {
       e->laterChanges.setZero(view(del).size());
       e->firstResidual = balanced;
       e->firstRaw = raw;
+      e->solveAtNoise = false;
+      e->updatePredictorNoise();
+      if (verdict == SUN_NLS_SUCCESS) e->widen(view(ewt), false);
       return verdict;
     }
     const bool stalled = verdict == SUN_NLS_CONV_RECVR || !(size < 0.9 * previous);
@@ -252,14 +267,86 @@ struct IdaIntegrator::Engine {
       // velocities of the extra degrees of freedom carry noise of eps cond c_j from the nearly
       // singular solves, growing as the step shrinks, and no step passed the error test. So
       // the error test of this solve (IDA's ewt, restored at the next solve's first
-      // iteration) does not ask for less than the sum of those changes (laterChanges).
-      auto w = view(ewt);
-      for (Eigen::Index i = 0; i < w.size(); ++i)
-        if (e->problem->differential(static_cast<int>(i)))
-          w(i) = 1.0 / (1.0 / w(i) + e->laterChanges(i));
+      // iteration) does not ask for less than the sum of those changes (laterChanges), taken
+      // at the level of the largest of each role (spreadNoise), nor for less than the noise the
+      // predictor carries (predictorNoise).
+      e->solveAtNoise = true;
+      e->spreadNoise();
+      e->widen(view(ewt), true);
       return SUN_NLS_SUCCESS;
     }
+    if (verdict == SUN_NLS_SUCCESS) e->widen(view(ewt), false);
     return verdict;
+  }
+
+  // The noise of a solve accepted at noise, per unknown: the largest weighted sum of later
+  // changes among the differential unknowns of its role (position, velocity, first-order), in
+  // each unknown's own weight. The noise of a nearly singular solve lies along the matrix's
+  // near-null directions, which mix all the extra degrees of freedom of A02's flat row: which
+  // unknown shows it in this solve's last iterations is chance, and the next solve shows it in
+  // another (measured: a coupler's WZ off by 300 tolerances from a history whose recorded
+  // noise in that unknown was 1e-6 of the tolerance, docs/integrators.md).
+  void spreadNoise() {
+    double level[4] = {0.0, 0.0, 0.0, 0.0};  // per DaeProblem::Role
+    for (Eigen::Index i = 0; i < laterChanges.size(); ++i) {
+      const int r = static_cast<int>(problem->role(static_cast<int>(i)));
+      if (problem->differential(static_cast<int>(i)))
+        level[r] = std::max(level[r], laterChanges(i) * baseWeights(i));
+    }
+    for (Eigen::Index i = 0; i < laterChanges.size(); ++i)
+      if (problem->differential(static_cast<int>(i)))
+        laterChanges(i) =
+            level[static_cast<int>(problem->role(static_cast<int>(i)))] / baseWeights(i);
+  }
+
+  // The error test of a converged solve does not ask for less than the noise it carries: its
+  // own later changes (atNoise) and the predictor's share of the noise of the solutions it
+  // interpolates (predictorNoise). A run that never stalls has neither: unchanged.
+  void widen(Eigen::Map<Eigen::VectorXd> w, bool atNoise) const {
+    const bool history = predictorNoise.size() == w.size();
+    if (!atNoise && !history) return;
+    for (Eigen::Index i = 0; i < w.size(); ++i) {
+      if (!problem->differential(static_cast<int>(i))) continue;
+      const double noise = (atNoise ? laterChanges(i) : 0.0) + (history ? predictorNoise(i) : 0.0);
+      w(i) = 1.0 / (1.0 / w(i) + noise);
+    }
+  }
+
+  // predictorNoise of the attempt IDA is solving (order k, step h): IDA's predictor is the
+  // polynomial through the last k+1 accepted solutions at t_n + h, so the noise of solution j
+  // enters it times |L_j(t_n + h)|, its Lagrange weight (up to 31 at order 5 with equal steps):
+  // at A02's flat passages the noise of one accepted solution, extrapolated, failed the error
+  // test of every later attempt whatever its step (docs/integrators.md, "DSTIFF and ABAM").
+  void updatePredictorNoise() {
+    predictorNoise.resize(0);
+    int k = 1;
+    realtype h = 0.0;
+    IDAGetCurrentOrder(ida, &k);
+    IDAGetCurrentStep(ida, &h);
+    const int nodes = std::min(k + 1, static_cast<int>(acceptedTimes.size()));
+    bool noisy = false;
+    for (int j = 0; j < nodes; ++j) noisy = noisy || acceptedNoise[j].size() > 0;
+    if (!noisy || h == 0.0) return;
+    const double tNew = acceptedTimes[0] + h;
+    for (int j = 0; j < nodes; ++j) {
+      if (acceptedNoise[j].size() == 0) continue;
+      double weight = 1.0;
+      for (int l = 0; l < nodes; ++l)
+        if (l != j) weight *= (tNew - acceptedTimes[l]) / (acceptedTimes[j] - acceptedTimes[l]);
+      if (predictorNoise.size() == 0) predictorNoise.setZero(acceptedNoise[j].size());
+      predictorNoise += std::abs(weight) * acceptedNoise[j];
+    }
+  }
+
+  // After an accepted step (the last solve was its corrector): its time and noise join the
+  // history.
+  void recordAccepted(double t) {
+    acceptedTimes.push_front(t);
+    acceptedNoise.push_front(solveAtNoise ? laterChanges : Eigen::VectorXd());
+    if (acceptedTimes.size() > kHistory) {
+      acceptedTimes.pop_back();
+      acceptedNoise.pop_back();
+    }
   }
 
   // The round-off floor of each unknown's Newton change, as BdfIntegrator::withinRoundOff
@@ -392,6 +479,8 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   IDASetMaxNonlinIters(e.ida, std::max(1, settings_.maxit));
   IDASetNonlinConvCoef(e.ida, kNewtonConvergence);
 
+  e.acceptedTimes.assign(1, t0);
+  e.acceptedNoise.assign(1, Eigen::VectorXd());
   t_ = tPrevious_ = t0;
   y_ = y0;
   yp_ = yp0;
@@ -416,6 +505,7 @@ bool IdaIntegrator::step(double tout) {
   IDAGetCurrentTime(e.ida, &tCurrent);
   IDAGetLastStep(e.ida, &hLast);
   tPrevious_ = tCurrent - hLast;
+  e.recordAccepted(tCurrent);
   t_ = std::abs(tReturned - tout) <= eps ? tout : tReturned;
   y_ = Engine::view(e.yy);
   yp_ = Engine::view(e.yp);
