@@ -170,6 +170,7 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   refreshNext_ = false;
   consecutiveErrorFailures_ = 0;
   velocityTested_ = velocityTestMask_.sum() > 0.0;
+  controlledVelocities_ = (velocityMask_.array() * errorMask_.array()).sum() > 0.0;
   velocityError_ = 0.0;
   velocityRejected_ = false;
 }
@@ -462,7 +463,25 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   }
   ypNew_ = cj * yNew_ + base_;
   predictorDiff_ = yNew_ - yPred_;
-  *errorNorm = errorRatio * weightedNorm(predictorDiff_, errorWeight_);
+  if (controlledVelocities_) {
+    // SI2: its velocities are in this test; their estimates keep the scale they were
+    // calibrated on, as the I3 velocity test's (exactHistoryRatio; with DASSL's coefficient on
+    // them SI2 GSTIFF at 1e-8 stopped at A02's first flat passage, docs/integrators.md, "Local
+    // error audit on A02"). One expression per part: no temporary vector.
+    const double others = (predictorDiff_.array() * errorWeight_.array() *
+                           (1.0 - velocityMask_.array()))
+                              .abs()
+                              .maxCoeff<Eigen::PropagateNaN>();
+    const double velocities =
+        (predictorDiff_.array() * errorWeight_.array() * velocityMask_.array())
+            .abs()
+            .maxCoeff<Eigen::PropagateNaN>();
+    *errorNorm = std::max(errorRatio * others, exactHistoryRatio * velocities);
+    if (std::isnan(others) || std::isnan(velocities))
+      *errorNorm = std::numeric_limits<double>::quiet_NaN();
+  } else {
+    *errorNorm = errorRatio * weightedNorm(predictorDiff_, errorWeight_);
+  }
   if (!std::isfinite(*errorNorm)) {
     noteWorst(g_, dy_);
     *newtonFailed = true;
