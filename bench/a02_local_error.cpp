@@ -180,6 +180,64 @@ const char* phaseOf(double phi) {
                     : "flat (|sin phi| <= 0.5)";
 }
 
+// The global error at the end split exactly over the steps (Lady Windermere's fan with the
+// exact flow), each term into the step's energy error carried to the end and the rest.
+void printFan(const Pendulum& pendulum, const std::vector<StepRecord>& steps,
+              const std::vector<double>& times, const std::vector<double>& phis,
+              const std::vector<double>& rates, double sumLocalPhi) {
+  const double hFlow = 5e-4;
+  const double tEnd = times.back();
+  auto carried = [&](double t, double p, double w, double& pT, double& wT) {
+    pT = p, wT = w;
+    pendulum.flow(pT, wT, tEnd - t, hFlow);
+  };
+  double pExact, wExact;
+  carried(0.0, M_PI / 2, -1.0, pExact, wExact);
+  double sumEnergyPart = 0.0, sumRest = 0.0;
+  double pPrev, wPrev;
+  carried(0.0, phis[0], rates[0], pPrev, wPrev);
+  std::map<std::string, double> energyPartByPhase, restByPhase;
+  for (size_t n = 0; n < steps.size(); ++n) {
+    double pNext, wNext;
+    carried(times[n + 1], phis[n + 1], rates[n + 1], pNext, wNext);
+    // The exact step's end with the energy of the step's result: the step's energy error.
+    double p = phis[n], w = rates[n];
+    pendulum.flow(p, w, steps[n].h, 1e-4);
+    const double e = pendulum.energy(phis[n + 1], rates[n + 1]);
+    const double w2 = 2.0 * (e - 9.81 * pendulum.b * std::sin(p)) / pendulum.a;
+    const double wE = std::copysign(std::sqrt(std::max(0.0, w2)), w);
+    double pE, wEnd;
+    carried(times[n + 1], p, wE, pE, wEnd);
+    sumEnergyPart += pE - pPrev;
+    sumRest += pNext - pE;
+    energyPartByPhase[phaseOf(steps[n].phi)] += pE - pPrev;
+    restByPhase[phaseOf(steps[n].phi)] += pNext - pE;
+    pPrev = pNext;
+  }
+  const double global = phis.back() - pExact;
+  const double e0 = pendulum.energy(M_PI / 2, -1.0);
+  std::printf(
+      "\nAt t = %g s: global phi error %+.3e rad (B0 %.3e m); sum of signed local dphi "
+      "%+.3e rad; fan: energy errors carried to the end %+.3e rad, the rest (position "
+      "and timing) %+.3e rad (sum %+.3e); energy error %+.3e J (%+.2e of E)\n",
+      tEnd, global, 2 * std::abs(std::sin(0.5 * global)), sumLocalPhi, sumEnergyPart, sumRest,
+      sumEnergyPart + sumRest, pendulum.energy(phis.back(), rates.back()) - e0,
+      (pendulum.energy(phis.back(), rates.back()) - e0) / std::abs(e0));
+  for (auto& [label, v] : energyPartByPhase)
+    std::printf("  %s: energy part %+.3e rad, rest %+.3e rad\n", label.c_str(), v,
+                restByPhase[label]);
+}
+
+void writeCsv(const char* path, const std::vector<StepRecord>& steps) {
+  FILE* f = std::fopen(path, "w");
+  if (!f) return;
+  std::fprintf(f, "t,h,order,phi,rate,estimate,true,true_velocity,dphi,drate,denergy\n");
+  for (const StepRecord& s : steps)
+    std::fprintf(f, "%.12g,%.6g,%d,%.12g,%.12g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n", s.t, s.h, s.order,
+                 s.phi, s.rate, s.estimate, s.trueNorm, s.trueVelocity, s.dPhi, s.dRate, s.dEnergy);
+  std::fclose(f);
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -315,58 +373,7 @@ int main(int argc, char** argv) {
   for (auto* group : {&byOrder, &byChange, &byPhase})
     for (auto& [label, summary] : *group) summary.print(label);
 
-  // The global error at tEnd split over the steps (Lady Windermere's fan, exact flow).
-  const double hFlow = 5e-4;
-  auto carried = [&](double t, double p, double w, double& pT, double& wT) {
-    pT = p, wT = w;
-    pendulum.flow(pT, wT, tEnd - t, hFlow);
-  };
-  double pExact, wExact;
-  carried(0.0, M_PI / 2, -1.0, pExact, wExact);
-  double sumEnergyPart = 0.0, sumRest = 0.0;
-  double pPrev, wPrev;
-  carried(0.0, phis[0], rates[0], pPrev, wPrev);
-  std::map<std::string, double> energyPartByPhase, restByPhase;
-  for (size_t n = 0; n < steps.size(); ++n) {
-    double pNext, wNext;
-    carried(times[n + 1], phis[n + 1], rates[n + 1], pNext, wNext);
-    // The exact step's end with the energy of the step's result: the step's energy error.
-    double p = phis[n], w = rates[n];
-    pendulum.flow(p, w, steps[n].h, 1e-4);
-    const double e = pendulum.energy(phis[n + 1], rates[n + 1]);
-    const double w2 = 2.0 * (e - 9.81 * pendulum.b * std::sin(p)) / pendulum.a;
-    const double wE = std::copysign(std::sqrt(std::max(0.0, w2)), w);
-    double pE, wEnd;
-    carried(times[n + 1], p, wE, pE, wEnd);
-    sumEnergyPart += pE - pPrev;
-    sumRest += pNext - pE;
-    energyPartByPhase[phaseOf(steps[n].phi)] += pE - pPrev;
-    restByPhase[phaseOf(steps[n].phi)] += pNext - pE;
-    pPrev = pNext;
-  }
-  const double global = phis.back() - pExact;
-  const double e0 = pendulum.energy(M_PI / 2, -1.0);
-  std::printf(
-      "\nAt t = %g s: global phi error %+.3e rad (B0 %.3e m); sum of signed local dphi "
-      "%+.3e rad; fan: energy errors carried to the end %+.3e rad, the rest (position "
-      "and timing) %+.3e rad (sum %+.3e); energy error %+.3e J (%+.2e of E)\n",
-      tEnd, global, 2 * std::abs(std::sin(0.5 * global)), all.sumPhi, sumEnergyPart, sumRest,
-      sumEnergyPart + sumRest, pendulum.energy(phis.back(), rates.back()) - e0,
-      (pendulum.energy(phis.back(), rates.back()) - e0) / std::abs(e0));
-  for (auto& [label, v] : energyPartByPhase)
-    std::printf("  %s: energy part %+.3e rad, rest %+.3e rad\n", label.c_str(), v,
-                restByPhase[label]);
-
-  if (argc > 5) {
-    FILE* f = std::fopen(argv[5], "w");
-    if (f) {
-      std::fprintf(f, "t,h,order,phi,rate,estimate,true,true_velocity,dphi,drate,denergy\n");
-      for (const StepRecord& s : steps)
-        std::fprintf(f, "%.12g,%.6g,%d,%.12g,%.12g,%.4g,%.4g,%.4g,%.4g,%.4g,%.4g\n", s.t, s.h,
-                     s.order, s.phi, s.rate, s.estimate, s.trueNorm, s.trueVelocity, s.dPhi,
-                     s.dRate, s.dEnergy);
-      std::fclose(f);
-    }
-  }
+  printFan(pendulum, steps, times, phis, rates, all.sumPhi);
+  if (argc > 5) writeCsv(argv[5], steps);
   return ok ? 0 : 1;
 }
