@@ -130,6 +130,8 @@ class BdfIntegrator final : public Integrator {
   // the problem has any; the last attempt's estimate, and whether it alone rejected the step.
   Eigen::VectorXd velocityTestMask_, velocityWeight_;
   bool velocityTested_ = false;
+  // Velocities inside the displacement test (SI2): their estimate keeps the exact-history scale.
+  bool controlledVelocities_ = false;
   double velocityError_ = 0.0;
   bool velocityRejected_ = false;
   // diagonal_[l] = y[t_n, ..., t_n-l], the divided differences through the newest l+1 accepted
