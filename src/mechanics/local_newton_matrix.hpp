@@ -85,11 +85,12 @@ class LocalNewtonMatrix {
   template <class S>
   void equationChunk(const ConstraintEquation& eq, const EquationPlan& plan, int base,
                      double lambda, double* values);
-  // The chunk's entries of one equation from its seeded poses and frames.
+  // The chunk's entries of one equation from its seeded poses and frames; arms (with armMask,
+  // bit per side set once computed) caches the Point sides' A^T (p - o), nullptr: none.
   template <class S>
   void equationRows(const ConstraintEquation& eq, const EquationPlan& plan, int base,
                     const V3<S>* origin, const M3<S>* axes, const Frame<S>* frames,
-                    double lambda, double* values);
+                    V3<S>* arms, int* armMask, double lambda, double* values);
 
   const MultibodySystem& system_;
   std::uint64_t patternStamp_ = 0;
@@ -129,6 +130,8 @@ class LocalNewtonMatrix {
     Frame<DualVec<kChunk>> frames[ConstraintEquation::kMaxMarkers];
     V3<DualVec<kChunk>> origin[6];
     M3<DualVec<kChunk>> axes[6];
+    V3<DualVec<kChunk>> arms[ConstraintEquation::kMaxMarkers];  // valid where armMask has the bit
+    int armMask = 0;
   };
   SeededFrames seeded_[6];
   // Per body at the current state: origin, axes and d(axes)/d(e_k).
