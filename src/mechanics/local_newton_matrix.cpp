@@ -167,7 +167,8 @@ void LocalNewtonMatrix::planStabilisation(const JacobianPattern& p, int equation
 
 template <class S>
 void LocalNewtonMatrix::stabilisationChunk(const EquationPlan& plan, int slot, const S* out,
-                                           int base, int last, double* values) const {
+                                           int base, int last, bool first,
+                                           double* values) const {
   const int n = plan.bodyCount, directions = 7 * n;
   const int* index = &stabilisedIndex_[static_cast<size_t>(plan.stabilisedIndex)];
   const int* velocityRow = index + 1;  // positions, then velocities
@@ -182,14 +183,14 @@ void LocalNewtonMatrix::stabilisationChunk(const EquationPlan& plan, int slot, c
     for (int r = 0; r < 6; ++r) sum += u[r] * Seeds<S>::get(out[r], j - base);
     values[velocityRow[j]] += sum;
   }
-  if (base == 0)
+  if (first)
     for (int r = 0; r < 6; ++r)
       values[velocityRow[directions + 6 * slot + r]] += Seeds<S>::value(out[r]);
   // r' = v - C_r^T eta: the kinematic row r - v + C_r^T eta.
   for (int r = 0; r < 3; ++r) {
     const int* row = kinematicRows + (7 * slot + r) * stride;
     for (int j = base; j < last; ++j) values[row[j]] += eta_ * Seeds<S>::get(out[r], j - base);
-    if (base == 0) values[row[directions]] += Seeds<S>::value(out[r]);
+    if (first) values[row[directions]] += Seeds<S>::value(out[r]);
   }
   // e' = E(e) (w - C_pi^T eta) / 2 + mu e: the row gains E(e) C_pi^T eta / 2, which depends on
   // the body's own e as well (seeded where the chunk holds its directions).
@@ -208,7 +209,7 @@ void LocalNewtonMatrix::stabilisationChunk(const EquationPlan& plan, int slot, c
     const int* row = kinematicRows + (7 * slot + 3 + r) * stride;
     for (int j = base; j < last; ++j)
       values[row[j]] += 0.5 * eta_ * Seeds<S>::get(g[r], j - base);
-    if (base == 0) values[row[directions]] += 0.5 * Seeds<S>::value(g[r]);
+    if (first) values[row[directions]] += 0.5 * Seeds<S>::value(g[r]);
   }
 }
 
@@ -300,6 +301,28 @@ void LocalNewtonMatrix::kinematics(const Eigen::VectorXd& y) {
   }
 }
 
+namespace {
+
+// True when MultibodySystem::analyticSideGradient of each side reads that side's own body's pose
+// alone (Point: +-e_axis and (A^T (p - o)) x (A^T e_axis)): its derivatives along the other
+// bodies are zero and are not computed (docs/performance.md, "The element-local Newton matrix,
+// cheaper").
+bool sideGradientReadsOwnBodyOnly(const ConstraintEquation& eq) {
+  return eq.kind == ConstraintEquation::Kind::Point;
+}
+
+// A constant (zero-derivative) matrix times a constant vector, as M3<S>::from(a) *
+// V3<S>::from(v) computes it, without the arithmetic on derivatives known to be zero
+// (docs/performance.md, "The element-local Newton matrix, cheaper").
+template <class S>
+V3<S> timesConstant(const M3<S>& a, const V3<double>& v) {
+  V3<S> r;
+  for (int k = 0; k < 3; ++k) r[k] = v.x * a.c[0][k] + v.y * a.c[1][k] + v.z * a.c[2][k];
+  return r;
+}
+
+}  // namespace
+
 template <class S>
 void LocalNewtonMatrix::buildSeeded(const ConstraintEquation& eq, const EquationPlan& plan,
                                     int base, V3<S>* origin, M3<S>* axes,
@@ -309,11 +332,13 @@ void LocalNewtonMatrix::buildSeeded(const ConstraintEquation& eq, const Equation
   const int last = std::min(7 * n, base + Seeds<S>::count);
   // The poses of the equation's bodies with the chunk's directions seeded: translations of
   // the origin, and the axes' derivatives along the Euler parameters.
+  bool seeded[6] = {};
   for (int i = 0; i < n; ++i) {
     const int b = plan.bodies[i];
     origin[i] = V3<S>::from(origin_[b]);
     axes[i] = M3<S>::from(axes_[b]);
     for (int j = std::max(base, 7 * i); j < std::min(last, 7 * i + 7); ++j) {
+      seeded[i] = true;
       const int q = j - 7 * i;
       if (q < 3) {
         Seeds<S>::at(origin[i][q], j - base) = 1.0;
@@ -324,17 +349,24 @@ void LocalNewtonMatrix::buildSeeded(const ConstraintEquation& eq, const Equation
       }
     }
   }
-  // Marker frames as the residual builds them (MultibodySystem::cachedFrame).
+  // Marker frames as the residual builds them (MultibodySystem::cachedFrame). The marker's
+  // body-fixed position and orientation are constants, and a body none of whose directions
+  // the chunk seeds gives a constant frame: both are multiplied in double and promoted, the
+  // same numbers as the dual products (docs/performance.md, "The element-local Newton matrix,
+  // cheaper").
   for (int side = 0; side < eq.markerCount(); ++side) {
     const model::Marker& mk = m.markers[eq.marker(side)];
-    const V3<S> sb = V3<S>::from(mk.position);
-    const M3<S> ab = M3<S>::from(mk.orientation);
+    const V3<double> sb = V3<double>::from(mk.position);
+    const M3<double> ab = M3<double>::from(mk.orientation);
     const int i = plan.slot[side];
     if (i < 0) {
-      frames[side] = {sb, ab};
+      frames[side] = {V3<S>::from(sb), M3<S>::from(ab)};
+    } else if (!seeded[i]) {
+      const int b = plan.bodies[i];
+      frames[side] = {V3<S>::from(origin_[b] + axes_[b] * sb), M3<S>::from(axes_[b] * ab)};
     } else {
-      frames[side].p = origin[i] + axes[i] * sb;
-      frames[side].a = axes[i] * ab;
+      frames[side].p = origin[i] + timesConstant(axes[i], sb);
+      for (int c = 0; c < 3; ++c) frames[side].a.c[c] = timesConstant(axes[i], ab.c[c]);
     }
   }
 }
@@ -342,34 +374,41 @@ void LocalNewtonMatrix::buildSeeded(const ConstraintEquation& eq, const Equation
 template <class S>
 void LocalNewtonMatrix::equationChunk(const ConstraintEquation& eq, const EquationPlan& plan,
                                       int base, double lambda, double* values) {
+  if constexpr (std::is_same_v<S, Multi>) {
+    // The seeded poses and frames of this pass, reused from the previous equation when it read
+    // the same markers (then its bodies, their order and the seeds are the same too); they live
+    // in seeded_ so that nothing of the size of a multi-direction frame is zero-filled per
+    // equation (docs/performance.md, "The element-local Newton matrix, cheaper").
+    SeededFrames& cache = seeded_[base / kChunk];
+    bool same = cache.markerCount == eq.markerCount() && cache.base == base;
+    for (int side = 0; same && side < eq.markerCount(); ++side)
+      same = cache.markers[side] == eq.marker(side);
+    if (!same) {
+      cache.markerCount = eq.markerCount();
+      cache.base = base;
+      for (int side = 0; side < eq.markerCount(); ++side) cache.markers[side] = eq.marker(side);
+      buildSeeded(eq, plan, base, cache.origin, cache.axes, cache.frames);
+      cache.armMask = 0;
+    }
+    equationRows(eq, plan, base, cache.origin, cache.axes, cache.frames, cache.arms,
+                 &cache.armMask, lambda, values);
+  } else {
+    V3<S> origin[6];
+    M3<S> axes[6];
+    Frame<S> frames[ConstraintEquation::kMaxMarkers];
+    buildSeeded(eq, plan, base, origin, axes, frames);
+    equationRows<S>(eq, plan, base, origin, axes, frames, nullptr, nullptr, lambda, values);
+  }
+}
+
+template <class S>
+void LocalNewtonMatrix::equationRows(const ConstraintEquation& eq, const EquationPlan& plan,
+                                     int base, const V3<S>* origin, const M3<S>* axes,
+                                     const Frame<S>* frames, V3<S>* arms, int* armMask,
+                                     double lambda, double* values) {
   constexpr int kCount = Seeds<S>::count;
   const int n = plan.bodyCount, directions = 7 * n;
   const int last = std::min(directions, base + kCount);
-  // The seeded poses and frames, reused from the previous equation when it read the same
-  // markers (then its bodies, their order and the seeds are the same too).
-  constexpr bool kMulti = std::is_same_v<S, Multi>;
-  V3<S> localOrigin[6];
-  M3<S> localAxes[6];
-  Frame<S> localFrames[ConstraintEquation::kMaxMarkers];
-  V3<S>* origin = localOrigin;
-  M3<S>* axes = localAxes;
-  Frame<S>* frames = localFrames;
-  if constexpr (kMulti) {
-    origin = seeded_.origin;
-    axes = seeded_.axes;
-    frames = seeded_.frames;
-    bool same = seeded_.markerCount == eq.markerCount() && seeded_.base == base;
-    for (int side = 0; same && side < eq.markerCount(); ++side)
-      same = seeded_.markers[side] == eq.marker(side);
-    if (!same) {
-      seeded_.markerCount = eq.markerCount();
-      seeded_.base = base;
-      for (int side = 0; side < eq.markerCount(); ++side) seeded_.markers[side] = eq.marker(side);
-      buildSeeded(eq, plan, base, origin, axes, frames);
-    }
-  } else {
-    buildSeeded(eq, plan, base, origin, axes, frames);
-  }
   const int* index = &index_[static_cast<size_t>(plan.index)];
   const int rowStride = directions + 1;
   const int* valueRow = index + 1;
@@ -380,21 +419,44 @@ void LocalNewtonMatrix::equationChunk(const ConstraintEquation& eq, const Equati
   else
     value = MultibodySystem::analyticGeometry(eq, frames);
   for (int j = base; j < last; ++j) values[valueRow[j]] += Seeds<S>::get(value, j - base);
+  // A side whose gradient reads its own body's pose only (Point) has no derivative along the
+  // other bodies' directions: it is evaluated in the pass over its own body alone, and its
+  // values (the multiplier's column) go in there; the others in the first pass
+  // (docs/performance.md, "The element-local Newton matrix, cheaper").
+  const bool ownOnly = sideGradientReadsOwnBodyOnly(eq);
   for (int side = 0; side < eq.markerCount(); ++side) {
     const int i = plan.slot[side];
     if (i < 0) continue;
+    if (ownOnly && (7 * i + 7 <= base || last <= 7 * i)) continue;  // none of body i's
+    const bool first = ownOnly ? base <= 7 * i && 7 * i < last : base == 0;
     S out[6];
-    if constexpr (std::is_same_v<S, Dual<double>>)
+    if constexpr (std::is_same_v<S, Dual<double>>) {
       MultibodySystem::sideGradient(eq, frames, side, origin[i], axes[i], out);
-    else
+    } else if (arms != nullptr && eq.kind == ConstraintEquation::Kind::Point) {
+      // MultibodySystem::analyticSideGradient's Point case, operation for operation, with the
+      // arm A^T (p - o) computed once per joint side and pass instead of once per equation
+      // (the three Point equations of a joint share it; docs/performance.md, "The
+      // element-local Newton matrix, cheaper").
+      if ((*armMask & (1 << side)) == 0) {
+        arms[side] = axes[i].tmul(frames[side].p - origin[i]);
+        *armMask |= 1 << side;
+      }
+      const int c = eq.axisJ;
+      const double sign = side == 0 ? 1.0 : -1.0;
+      const V3<S> gpBody(sign * axes[i].c[0][c], sign * axes[i].c[1][c], sign * axes[i].c[2][c]);
+      for (int d = 0; d < 3; ++d) out[d] = S(d == c ? sign : 0.0);
+      const V3<S> torque = cross(arms[side], gpBody);
+      for (int d = 0; d < 3; ++d) out[3 + d] = torque[d];
+    } else {
       MultibodySystem::analyticSideGradient(eq, frames, side, origin[i], axes[i], out);
+    }
     for (int r = 0; r < 6; ++r) {
       const int* row = forceRows + (6 * i + r) * rowStride;
       for (int j = base; j < last; ++j) values[row[j]] += lambda * Seeds<S>::get(out[r], j - base);
-      // The multiplier's column: the gradient itself (once, with the first chunk).
-      if (base == 0) values[row[directions]] += Seeds<S>::value(out[r]);
+      // The multiplier's column: the gradient itself (once per side).
+      if (first) values[row[directions]] += Seeds<S>::value(out[r]);
     }
-    if (stabilised_) stabilisationChunk(plan, i, out, base, last, values);
+    if (stabilised_) stabilisationChunk(plan, i, out, base, last, first, values);
   }
 }
 
@@ -405,7 +467,7 @@ void LocalNewtonMatrix::assemble(double t, const Eigen::VectorXd& y, const Eigen
   std::fill(values, values + nonZeros_, 0.0);
   bodyBlocks(y, cj, values);
   kinematics(y);
-  seeded_.markerCount = -1;  // a new state
+  for (SeededFrames& cache : seeded_) cache.markerCount = -1;  // a new state
   state_ = y.data();
   const auto& eqs = system_.constraints().equations();
   for (size_t k = 0; k < equations_.size(); ++k) {

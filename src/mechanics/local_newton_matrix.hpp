@@ -37,8 +37,11 @@ class LocalNewtonMatrix {
  public:
   LocalNewtonMatrix(const MultibodySystem& system, const JacobianPattern& pattern);
 
-  // Directions per multi-direction pass: all positions (r, e) of two bodies.
-  static constexpr int kChunk = 14;
+  // Directions per multi-direction pass: the positions (r, e) of one body. One pass per body
+  // rather than one over two bodies: the frames of the other bodies are then constants, and a
+  // Point equation's side needs only its own body's pass (docs/performance.md, "The
+  // element-local Newton matrix, cheaper").
+  static constexpr int kChunk = 7;
 
   bool usable() const { return usable_; }
   // Planned with the SI2 rows and columns (a pattern of size + constraintEquations).
@@ -65,9 +68,10 @@ class LocalNewtonMatrix {
   void planForceAndUser(const JacobianPattern& pattern);
   void planStabilisation(const JacobianPattern& pattern, int equation, EquationPlan& plan);
   // The SI2 entries of one side's gradient `out` (body slot i) over the chunk's directions.
+  // `first`: the first pass that evaluates this side (it adds the values, not derivatives).
   template <class S>
   void stabilisationChunk(const EquationPlan& plan, int slot, const S* out, int base, int last,
-                          double* values) const;
+                          bool first, double* values) const;
   void bodyBlocks(const Eigen::VectorXd& y, double cj, double* values) const;
   // The force-element and user-equation entries, one compressed AD pass per colour of
   // forceAndUser_ (local_newton_colours.cpp); in parallel over colours when parallelColours_.
@@ -81,6 +85,12 @@ class LocalNewtonMatrix {
   template <class S>
   void equationChunk(const ConstraintEquation& eq, const EquationPlan& plan, int base,
                      double lambda, double* values);
+  // The chunk's entries of one equation from its seeded poses and frames; arms (with armMask,
+  // bit per side set once computed) caches the Point sides' A^T (p - o), nullptr: none.
+  template <class S>
+  void equationRows(const ConstraintEquation& eq, const EquationPlan& plan, int base,
+                    const V3<S>* origin, const M3<S>* axes, const Frame<S>* frames,
+                    V3<S>* arms, int* armMask, double lambda, double* values);
 
   const MultibodySystem& system_;
   std::uint64_t patternStamp_ = 0;
@@ -110,8 +120,9 @@ class LocalNewtonMatrix {
     std::vector<Dual<double>> y, yp, g;
   };
   std::vector<BlockDuals> blockDuals_;
-  // The seeded poses and marker frames of the last multi-direction pass: the equations of one
-  // joint read the same markers, so they are built once per joint, not once per equation.
+  // The seeded poses and marker frames of the last multi-direction pass over each body slot:
+  // the equations of one joint read the same markers, so they are built once per joint and
+  // pass, not once per equation.
   struct SeededFrames {
     int markers[ConstraintEquation::kMaxMarkers];
     int markerCount = -1;  // -1: nothing cached
@@ -119,8 +130,10 @@ class LocalNewtonMatrix {
     Frame<DualVec<kChunk>> frames[ConstraintEquation::kMaxMarkers];
     V3<DualVec<kChunk>> origin[6];
     M3<DualVec<kChunk>> axes[6];
+    V3<DualVec<kChunk>> arms[ConstraintEquation::kMaxMarkers];  // valid where armMask has the bit
+    int armMask = 0;
   };
-  SeededFrames seeded_;
+  SeededFrames seeded_[6];
   // Per body at the current state: origin, axes and d(axes)/d(e_k).
   std::vector<V3<double>> origin_;
   std::vector<M3<double>> axes_;
