@@ -75,10 +75,11 @@ constexpr double kResidualNoise = 1e-6;
 constexpr double kRawResidualNoise = 1e-6;
 // An iteration accepted by any of these stall rules stops with the noise of its last changes
 // in the solution: at A02's flat passages the positions along the extra degrees of freedom are
-// left 2-35 tolerances apart from one iteration to the next (SI2 GSTIFF, N = 40, ERROR = 1e-8,
-// 1-30 x kRoundOffUlps), and the error test, corrector minus predictor, sees that noise as
-// local error: it rejected every step down to h = 1.6e-7 s, where the corrector failed (t =
-// 6.6187 s, docs/integrators.md, "Singular configurations"). So the error test of a solve
+// left up to 32 tolerances apart from one iteration to the next (SI2 GSTIFF, N = 40, ERROR =
+// 1e-8; up to 36 x kRoundOffUlps), and the error test, corrector minus predictor, sees that
+// noise as local error: it rejected every step down to h = 3.2e-6 s, and below that the
+// corrector failed (t = 6.6187 s; docs/integrators.md, "The noise of a stalled solve in the
+// BDF's error test", under "Singular configurations"). So the error test of a solve
 // accepted at noise does not ask for less than the noise: each differential unknown's weight
 // becomes 1 / (ERROR (1 + |y|) + noise), the noise being the sum of the changes after the
 // first iteration (the first is the correction proper) taken at the largest weighted level of
