@@ -73,6 +73,19 @@ constexpr double kResidualNoise = 1e-6;
 // equation is solved to round-off (A02, N = 40, GSTIFF at ERROR = 1e-8 with the I3 velocities in
 // the error test, docs/integrators.md: failed at t = 4.65 s without it).
 constexpr double kRawResidualNoise = 1e-6;
+// An iteration accepted by any of these stall rules stops with the noise of its last changes
+// in the solution: at A02's flat passages the positions along the extra degrees of freedom are
+// left up to 32 tolerances apart from one iteration to the next (SI2 GSTIFF, N = 40, ERROR =
+// 1e-8; up to 36 x kRoundOffUlps), and the error test, corrector minus predictor, sees that
+// noise as local error: it rejected every step down to h = 3.2e-6 s, and below that the
+// corrector failed (t = 6.6187 s; docs/integrators.md, "The noise of a stalled solve in the
+// BDF's error test", under "Singular configurations"). So the error test of a solve
+// accepted at noise does not ask for less than the noise: each differential unknown's weight
+// becomes 1 / (ERROR (1 + |y|) + noise), the noise being the sum of the changes after the
+// first iteration (the first is the correction proper) taken at the largest weighted level of
+// its role (the noise lies along the matrix's near-null directions, which mix the extra
+// degrees of freedom, so which unknown shows it is chance; DSTIFF's rule, docs/integrators.md,
+// "DSTIFF and ABAM"). A solve that converges is unchanged.
 // Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
 // share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
 // as many at every further detection.
@@ -371,6 +384,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     double previous = 0.0, rate = 0.0;
     double firstResidual = 0.0, lastResidual = 0.0, firstSize = 0.0;
     double firstRaw = 0.0, lastRaw = 0.0;  // the same, unscaled (see kRawResidualNoise)
+    laterChanges_.setZero(yNew_.size());
+    bool atNoise = false;  // accepted by a stall rule (widenForNoise)
     bool converged = false;
     bool onRelativeTarget = false;  // converged on the step's own error, not kTightChange
     for (int it = 0; it < settings_.maxit; ++it) {
@@ -419,6 +434,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
             {tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_, lastWorstChange_});
       }
       if (it > 0) rate = size / std::max(previous, 1e-300);
+      if (it > 0) laterChanges_ += dy_.cwiseAbs();
       if (it == 0) firstSize = size;
       previous = size;
       // Converged when the remaining change, about rate / (1 - rate) times the last one, is
@@ -446,6 +462,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
            lastResidual <= kResidualNoise * firstResidual ||
            lastRaw <= kRawResidualNoise * firstRaw)) {
         converged = true;
+        atNoise = true;
         break;
       }
       if (it > 1 && rate > 0.9) break;  // diverging
@@ -455,7 +472,10 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       converged = false;  // stale matrix, residual left standing: retry on a fresh one
     if (converged && onRelativeTarget && !jacobianCurrent_ && rate > kRefreshRate)
       refreshNext_ = true;
-    if (converged) break;
+    if (converged) {
+      if (atNoise) widenForNoise();
+      break;
+    }
     if (jacobianCurrent_ || attempt == 1) {
       noteWorst(g_, dy_);
       *newtonFailed = true;
@@ -505,6 +525,20 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   velocityRejected_ = *errorNorm <= 1.0 && velocityError_ > 1.0;
   if (*errorNorm > 1.0 || velocityRejected_) noteWorst(g_, dy_);  // for the failure report
   return *errorNorm <= 1.0 && !velocityRejected_;
+}
+
+void BdfIntegrator::widenForNoise() {
+  // errorWeight_ is 1 / (ERROR (1 + |y_n|)) masked (setWeights); the level of each role in
+  // that weight, then each unknown's weight 1 / (1 / w + level / w) = w / (1 + level).
+  double level[4] = {0.0, 0.0, 0.0, 0.0};  // per DaeProblem::Role
+  for (Eigen::Index i = 0; i < laterChanges_.size(); ++i) {
+    if (differentialMask_(i) == 0.0) continue;
+    const int r = static_cast<int>(problem_.role(static_cast<int>(i)));
+    level[r] = std::max(level[r], laterChanges_(i) * errorWeight_(i));
+  }
+  for (Eigen::Index i = 0; i < errorWeight_.size(); ++i)
+    if (differentialMask_(i) != 0.0)
+      errorWeight_(i) /= 1.0 + level[static_cast<int>(problem_.role(static_cast<int>(i)))];
 }
 
 double BdfIntegrator::orderErrorEstimate(int q, double h) const {

@@ -80,6 +80,9 @@ class BdfIntegrator final : public Integrator {
   void updateDivided();
   // After a displacement error-test failure at step h with estimate err: the next h_ and k_.
   void rejectOnDisplacement(double h, double err);
+  // The noise a solve accepted by a stall rule carries (kStalledChange and the rules after it
+  // in the .cpp): laterChanges_ spread over each role, then the error weights widened by it.
+  void widenForNoise();
 
   DaeProblem& problem_;
   MultistepSettings settings_;
@@ -148,6 +151,8 @@ class BdfIntegrator final : public Integrator {
 
   // Work vectors (no allocation in the step loop).
   Eigen::VectorXd yNew_, ypNew_, yPred_, base_, g_, dy_, predictorDiff_;
+  // Sum of |change| over the iterations after the first, per unknown (widenForNoise).
+  Eigen::VectorXd laterChanges_;
   int lastWorstEq_ = -1, lastWorstVar_ = -1;
   double lastWorstRes_ = 0.0, lastWorstChange_ = 0.0;
 };
