@@ -15,6 +15,7 @@
 #include "solvers/hht_integrator.hpp"
 #include "support/bdf_run.hpp"
 #include "support/forwarding_problem.hpp"
+#include "support/link_chain.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -26,21 +27,9 @@ std::string chain(const std::string& extraForce) {
   std::ostringstream s;
   s << "hht affine rates\nUNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND\n"
        "PART/1, GROUND\nMARKER/10, PART=1, QP=0,0,0\n";
-  const char* joints[] = {"REVOLUTE", "SPHERICAL",   "UNIVERSAL",
-                          "REVOLUTE", "CYLINDRICAL", "SPHERICAL"};
-  for (int i = 0; i < 6; ++i) {
-    const int p = i + 2;
-    s << "PART/" << p << ", MASS=" << 1.0 + 0.2 * i << ", CM=" << 10 * p << ", IP=0.05,0.08,0.11\n"
-      << "MARKER/" << 10 * p << ", PART=" << p << ", QP=" << i + 0.5 << ",0,0\n"
-      << "MARKER/" << 10 * p + 1 << ", PART=" << p << ", QP=" << i << ",0,0"
-      << (std::string(joints[i]) == "UNIVERSAL" ? ", REULER=0D,90D,0D" : "") << "\n"
-      << "MARKER/" << 10 * p + 2 << ", PART=" << p << ", QP=" << i + 1 << ",0,0\n";
-    const int parentTip = i == 0 ? 10 : 10 * (p - 1) + 2;
-    s << "JOINT/" << p << ", " << joints[i] << ", I=" << 10 * p + 1 << ", J=" << parentTip << "\n";
-    if (i >= 2)
-      s << "SPRINGDAMPER/" << p << ", TRANSLATIONAL, I=" << 10 * p << ", J=" << 10 * (p - 2)
-        << ", K=40, C=0.4, LENGTH=2\n";
-  }
+  openmss::testing::writeLinkChain(
+      s, {"REVOLUTE", "SPHERICAL", "UNIVERSAL", "REVOLUTE", "CYLINDRICAL", "SPHERICAL"}, 0.2,
+      "0.05,0.08,0.11", 40, 0.4);
   s << "MOTION/1, JOINT=2, FUNCTION=0.3*SIN(2*TIME)\n"
     << "SFORCE/1, TRANSLATION, I=72, J=10, FUNCTION=-10*(DM(72,10)-5)-0.2*VR(72,10)\n"
     << "DIFF/1, FUNCTION=WZ(52,10)-DIF(1), IC=0\n"

@@ -19,8 +19,9 @@
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
 #include "solvers/ida_integrator.hpp"
-#include "support/random_state.hpp"
 #include "support/dense_only_problem.hpp"
+#include "support/link_chain.hpp"
+#include "support/random_state.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -45,21 +46,10 @@ std::string mixedChain() {
   std::ostringstream s;
   s << "mixed\nUNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND\n"
        "PART/1, GROUND\nMARKER/10, PART=1, QP=0,0,0\nMARKER/11, PART=1, QP=0,0,0\n";
-  const char* joints[] = {"REVOLUTE",  "SPHERICAL", "TRANSLATIONAL", "CYLINDRICAL",
-                          "UNIVERSAL", "REVOLUTE",  "PLANAR",        "TRANSLATIONAL"};
-  for (int i = 0; i < 8; ++i) {
-    const int p = i + 2;
-    s << "PART/" << p << ", MASS=" << 1.0 + 0.1 * i << ", CM=" << 10 * p << ", IP=0.05,0.1,0.12\n"
-      << "MARKER/" << 10 * p << ", PART=" << p << ", QP=" << i + 0.5 << ",0,0\n"
-      << "MARKER/" << 10 * p + 1 << ", PART=" << p << ", QP=" << i << ",0,0"
-      << (std::string(joints[i]) == "UNIVERSAL" ? ", REULER=0D,90D,0D" : "") << "\n"
-      << "MARKER/" << 10 * p + 2 << ", PART=" << p << ", QP=" << i + 1 << ",0,0\n";
-    const int parentTip = i == 0 ? 10 : 10 * (p - 1) + 2;
-    s << "JOINT/" << p << ", " << joints[i] << ", I=" << 10 * p + 1 << ", J=" << parentTip << "\n";
-    if (i >= 2)
-      s << "SPRINGDAMPER/" << p << ", TRANSLATIONAL, I=" << 10 * p << ", J=" << 10 * (p - 2)
-        << ", K=50, C=0.5, LENGTH=2\n";
-  }
+  openmss::testing::writeLinkChain(s,
+                                   {"REVOLUTE", "SPHERICAL", "TRANSLATIONAL", "CYLINDRICAL",
+                                    "UNIVERSAL", "REVOLUTE", "PLANAR", "TRANSLATIONAL"},
+                                   0.1, "0.05,0.1,0.12", 50, 0.5);
   s << "MOTION/1, JOINT=2, FUNCTION=0.3*SIN(2*TIME)\n"
     << "MOTION/2, JOINT=9, FUNCTION=0.1*TIME\n"
     << "SFORCE/1, TRANSLATION, I=72, J=10, FUNCTION=-10*(DM(72,10)-3)-0.2*VR(72,10)\n"

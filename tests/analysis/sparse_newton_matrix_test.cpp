@@ -258,6 +258,17 @@ TEST(SparseNewtonMatrix, GuardFindsEntriesOutsideATooSparsePattern) {
   EXPECT_LE((Eigen::MatrixXd(jac) - dense).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + dense.cwiseAbs().maxCoeff()));
 }
 
+// A consistent state at t = 0 (positions assembled, velocities, accelerations), as a run's
+// initial conditions make it.
+bool consistentStart(MultibodySystem& s, Eigen::VectorXd& y, Eigen::VectorXd& yp) {
+  y = s.initialState();
+  yp = Eigen::VectorXd::Zero(s.layout().size());
+  mechanics::removeRedundantConstraints(s, y);
+  if (!mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged) return false;
+  mechanics::solveVelocities(s, 0.0, y);
+  return mechanics::solveAccelerations(s, 0.0, y, yp);
+}
+
 TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
   // A planar revolute chain above the sparse threshold, integrated for 0.3 s from a consistent
   // state both ways. (Not the chain with every coupling: its spherical links make it so
@@ -266,11 +277,8 @@ TEST(SparseNewtonMatrix, KluPathFollowsTheDenseLuPath) {
   ASSERT_TRUE(modelFromText(chainDataset(12, false), m));
   MultibodySystem s(m);
   ASSERT_GE(s.layout().size(), solvers::BdfIntegrator::kSparseThreshold);
-  Eigen::VectorXd y = s.initialState(), yp = Eigen::VectorXd::Zero(s.layout().size());
-  mechanics::removeRedundantConstraints(s, y);
-  ASSERT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged);
-  mechanics::solveVelocities(s, 0.0, y);
-  ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
+  Eigen::VectorXd y, yp;
+  ASSERT_TRUE(consistentStart(s, y, yp));
   solvers::MultistepSettings settings;
   settings.error = 1e-6;
   settings.hmax = 0.01;
@@ -333,11 +341,8 @@ TEST(SparseNewtonMatrix, ScheduledGuardLeavesTheRunBitIdentical) {
   model::Model m;
   ASSERT_TRUE(modelFromText(chainDataset(12, false), m));
   MultibodySystem s(m);
-  Eigen::VectorXd y = s.initialState(), yp = Eigen::VectorXd::Zero(s.layout().size());
-  mechanics::removeRedundantConstraints(s, y);
-  ASSERT_TRUE(mechanics::assemblePositions(s, 0.0, y, 1e-12, 25).converged);
-  mechanics::solveVelocities(s, 0.0, y);
-  ASSERT_TRUE(mechanics::solveAccelerations(s, 0.0, y, yp));
+  Eigen::VectorXd y, yp;
+  ASSERT_TRUE(consistentStart(s, y, yp));
   solvers::MultistepSettings settings;
   settings.error = 1e-6;
   settings.hmax = 0.01;

@@ -177,20 +177,28 @@ TEST(A02SingularPassage, Dstiff) {
   expectWithinBenchmark("DSTIFF", 1e-6);
   expectWithinBenchmark("DSTIFF", 1e-8);
 }
+// A run at a tight ERROR through `flats` flat passages that stopped at a passage before a fix:
+// it reaches END at every output, passes each passage, and stays within `bound` of the exact
+// solution over all outputs and at END.
+void expectPassesAtTightError(const char* integrator, const char* label, int windows, double end,
+                              int outputs, int flats, double bound) {
+  const Outcome o = runA02(integrator, 1e-8, windows, end, outputs);
+  EXPECT_EQ(o.status, 0) << o.output;
+  EXPECT_EQ(o.samples, outputs + 1) << o.output;
+  EXPECT_EQ(o.flatPassages, flats);
+  EXPECT_LT(o.largestError, bound);
+  EXPECT_LT(o.endError, bound);
+  std::printf("A02 N=%d %s ERROR=1e-08: largest B0 error %.2e m, %.2e m at %g s, %d flat\n",
+              windows, label, o.largestError, o.endError, end, o.flatPassages);
+}
+
 // DSTIFF at N = 10, ERROR = 1e-8, 3 s (flat at t = 0.72, 1.24 and 2.69 s): before the
 // noise rules of docs/integrators.md ("DSTIFF and ABAM", the flat passages) it stopped at the
 // second flat passage, t = 1.2409 s, on repeated error-test failures down to h = 1e-7 s; now
 // measured 3.1e-7 m over all 61 outputs (SI2 GSTIFF: 1.5e-7 m). Bound 1e-5 m, 1000 ERROR, two
 // decades under the benchmark's 1e-3 m (about 0.5 s of CPU).
 TEST(A02SingularPassage, DstiffPassesTenWindowsAtTightError) {
-  const Outcome o = runA02("DSTIFF", 1e-8, 10, 3.0, 60);
-  EXPECT_EQ(o.status, 0) << o.output;
-  EXPECT_EQ(o.samples, 61) << o.output;
-  EXPECT_EQ(o.flatPassages, 3);
-  EXPECT_LT(o.largestError, 1e-5);
-  EXPECT_LT(o.endError, 1e-5);
-  std::printf("A02 N=10 DSTIFF ERROR=1e-08: largest B0 error %.2e m, %.2e m at 3 s, %d flat\n",
-              o.largestError, o.endError, o.flatPassages);
+  expectPassesAtTightError("DSTIFF", "DSTIFF", 10, 3.0, 60, 3, 1e-5);
 }
 // DSTIFF at the benchmark's N = 40, ERROR = 1e-8, 1.5 s (flat at t = 0.7216 and 1.2440 s):
 // before the predictor's noise and the spread noise of docs/integrators.md ("DSTIFF and ABAM",
@@ -199,14 +207,7 @@ TEST(A02SingularPassage, DstiffPassesTenWindowsAtTightError) {
 // over all 31 outputs. Bound 1e-6 m, 100 ERROR, three decades under the benchmark's 1e-3 m
 // (about 0.8 s of CPU).
 TEST(A02SingularPassage, DstiffPassesFortyWindowsAtTightError) {
-  const Outcome o = runA02("DSTIFF", 1e-8, 40, 1.5, 30);
-  EXPECT_EQ(o.status, 0) << o.output;
-  EXPECT_EQ(o.samples, 31) << o.output;
-  EXPECT_EQ(o.flatPassages, 2);
-  EXPECT_LT(o.largestError, 1e-6);
-  EXPECT_LT(o.endError, 1e-6);
-  std::printf("A02 N=40 DSTIFF ERROR=1e-08: largest B0 error %.2e m, %.2e m at 1.5 s, %d flat\n",
-              o.largestError, o.endError, o.flatPassages);
+  expectPassesAtTightError("DSTIFF", "DSTIFF", 40, 1.5, 30, 2, 1e-6);
 }
 // SI2 GSTIFF at the benchmark's N = 40, ERROR = 1e-8, 7 s (seven flat passages, the last at 6.62 s):
 // after the set-up solves moved to KLU (a round-off change of the initial conditions) it
@@ -217,14 +218,7 @@ TEST(A02SingularPassage, DstiffPassesFortyWindowsAtTightError) {
 // configurations"): 7 s within 1.4e-7 m at 7 s, 5.0e-7 m over all 141 outputs (about 2 s of
 // CPU). Bound 1e-5 m, 1000 ERROR, two decades under the benchmark's 1e-3 m.
 TEST(A02SingularPassage, GstiffSi2PassesFortyWindowsAtTightError) {
-  const Outcome o = runA02("SI2_GSTIFF", 1e-8, 40, 7.0, 140);
-  EXPECT_EQ(o.status, 0) << o.output;
-  EXPECT_EQ(o.samples, 141) << o.output;
-  EXPECT_EQ(o.flatPassages, 7);
-  EXPECT_LT(o.largestError, 1e-5);
-  EXPECT_LT(o.endError, 1e-5);
-  std::printf("A02 N=40 SI2 GSTIFF ERROR=1e-08: largest B0 error %.2e m, %.2e m at 7 s, %d flat\n",
-              o.largestError, o.endError, o.flatPassages);
+  expectPassesAtTightError("SI2_GSTIFF", "SI2 GSTIFF", 40, 7.0, 140, 7, 1e-5);
 }
 TEST(A02SingularPassage, MersonAtTheLoosestAndTightestError) {
   expectWithinBenchmark("MERSON", 1e-4);
