@@ -230,6 +230,13 @@ class MultibodySystem {
   // serial loop makes. False (nothing done) when it does not apply: one thread, few equations,
   // or an equation kind whose evaluation reads shared state (the serial loop then runs).
   bool parallelConstraintRows(double t, const double* y, double* g) const;
+  // The constraint part of residual<double> on one thread (multibody_residual_rows.cpp): the
+  // rows of constraintRow in equation order with the marker frames, bodies and Point arms of
+  // consecutive equations on the same markers (a joint's) taken once; bit-identical to it.
+  void serialConstraintRows(double t, const double* y, double* g) const;
+  // Equation k's row of G and its constraint forces -C^T lambda added into g (the serial loop).
+  template <class T>
+  void constraintRow(int k, double t, KinematicsScratch<T>& kin, const T* y, T* g) const;
   // The reaction of equations selected by `take(eq)` on `marker`'s part.
   template <class Pick>
   void reactionOf(Pick take, int marker, const double* y, Eigen::Vector3d& force,
@@ -438,29 +445,36 @@ void MultibodySystem::residual(double t, const T* y, const T* yp, T* g) const {
     // Large models: the constraint rows and forces on the thread pool, same bits
     // (multibody_residual_parallel.cpp).
     if (parallelConstraintRows(t, y, g)) return;
+    // Otherwise the serial loop below with a joint's shared work done once, same bits
+    // (multibody_residual_rows.cpp).
+    serialConstraintRows(t, y, g);
+    return;
   }
   const auto& eqs = constraints_.equations();
   KinematicsScratch<T>& kin = beginKinematics<T>();
-  for (int k = 0; k < static_cast<int>(eqs.size()); ++k) {
-    const ConstraintEquation& eq = eqs[k];
-    const T& lambda = y[layout_.lambda(k)];
-    T& row = g[layout_.lambda(k)];
-    if (!eq.active) {
-      row = lambda;
-      continue;
-    }
-    Frame<T> frames[ConstraintEquation::kMaxMarkers];
-    for (int s = 0; s < eq.markerCount(); ++s) frames[s] = cachedFrame(kin, eq.marker(s), y);
-    addConstraintForce(eq, frames, kin, y, lambda, g);
-    T value = ConstraintSet::geometry(eq, frames);
-    if (eq.motion >= 0) {
-      const double target = motionJet(k, t).value;
-      value = value - target;
-      if (ConstraintSet::wrapsAngle(eq))
-        value = value - wrapDelta(valueOf(value) + target, target);
-    }
-    row = value;
+  for (int k = 0; k < static_cast<int>(eqs.size()); ++k) constraintRow(k, t, kin, y, g);
+}
+
+template <class T>
+void MultibodySystem::constraintRow(int k, double t, KinematicsScratch<T>& kin, const T* y,
+                                    T* g) const {
+  const ConstraintEquation& eq = constraints_.equations()[k];
+  const T& lambda = y[layout_.lambda(k)];
+  T& row = g[layout_.lambda(k)];
+  if (!eq.active) {
+    row = lambda;
+    return;
   }
+  Frame<T> frames[ConstraintEquation::kMaxMarkers];
+  for (int s = 0; s < eq.markerCount(); ++s) frames[s] = cachedFrame(kin, eq.marker(s), y);
+  addConstraintForce(eq, frames, kin, y, lambda, g);
+  T value = ConstraintSet::geometry(eq, frames);
+  if (eq.motion >= 0) {
+    const double target = motionJet(k, t).value;
+    value = value - target;
+    if (ConstraintSet::wrapsAngle(eq)) value = value - wrapDelta(valueOf(value) + target, target);
+  }
+  row = value;
 }
 
 }  // namespace openmss::mechanics

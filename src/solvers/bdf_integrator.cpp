@@ -6,6 +6,7 @@
 #include <utility>
 
 #include "solvers/bdf_polynomials.hpp"
+#include "solvers/bdf_vector_passes.hpp"
 
 namespace openmss::solvers {
 namespace {
@@ -115,6 +116,8 @@ constexpr double kGrowthAgreement = 1.3;
 constexpr double kVelocityTestSteps = 2.0;
 
 using bdf::bdfWeights;
+using bdf::combine;
+using bdf::combineFromZero;
 using bdf::lagrangeAt;
 
 }  // namespace
@@ -219,42 +222,48 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   if (nh >= k + 1) {
     for (int j = 0; j <= k; ++j) nodes[j] = ts_[j];
     lagrangeAt(nodes, k + 1, tNew, w, dw);
-    yPred_.setZero();
-    for (int j = 0; j <= k; ++j) yPred_ += w[j] * ys_[j];
+    // yPred_ = 0 + w_0 y_0 + ... + w_k y_k in one pass (bdf_vector_passes.hpp).
+    const double* src[8];
+    for (int j = 0; j <= k; ++j) src[j] = ys_[static_cast<size_t>(j)].data();
+    combineFromZero(yPred_.data(), src, w, k + 1, yPred_.size());
   } else {
     yPred_ = y_ + h * yp_;
   }
   // Corrector: BDF of order k through tNew and the last k solutions.
   nodes[0] = tNew;
   for (int j = 1; j <= k; ++j) nodes[j] = ts_[j - 1];
+  // The corrector's history y_n+1-j, j = 1..k: past solutions, or GSTIFF's re-sampled ones.
+  const double* history[8];
+  for (int j = 1; j <= k; ++j) history[j - 1] = ys_[static_cast<size_t>(j - 1)].data();
   if (settings_.fixedCoefficients && nh >= 2) {
     // GSTIFF: the past solutions re-sampled at t_n - (j-1) h on the polynomial through the
     // last min(k+1, nh) solutions (the predictor's), so the corrector has constant-step
     // coefficients whatever the step history.
     const int npts = std::min(k + 1, nh);
     double hist[8] = {}, wv[8], dwv[8];
-    for (int j = 0; j < npts; ++j) hist[j] = ts_[j];
+    const double* past[8];
+    for (int j = 0; j < npts; ++j) {
+      hist[j] = ts_[j];
+      past[j] = ys_[static_cast<size_t>(j)].data();
+    }
     equallySpaced_.resize(static_cast<size_t>(k));
     for (int j = 1; j <= k; ++j) {
       nodes[j] = t_ - (j - 1) * h;
-      Eigen::VectorXd& v = equallySpaced_[static_cast<size_t>(j - 1)];
       const double* hit = std::find(hist, hist + npts, nodes[j]);
       if (hit != hist + npts) {
-        v = ys_[static_cast<size_t>(hit - hist)];
+        history[j - 1] = past[hit - hist];  // read in place, not copied
         continue;
       }
       lagrangeAt(hist, npts, nodes[j], wv, dwv);
-      v = wv[0] * ys_[0];
-      for (int m = 1; m < npts; ++m) v += wv[m] * ys_[static_cast<size_t>(m)];
+      Eigen::VectorXd& v = equallySpaced_[static_cast<size_t>(j - 1)];
+      v.resize(y_.size());
+      combine(v.data(), past, wv, npts, v.size());  // v = wv_0 y_0 + wv_1 y_1 + ...
+      history[j - 1] = v.data();
     }
   }
   bdfWeights(nodes, k + 1, a);
   const double cj = a[0];
-  base_.setZero();
-  if (settings_.fixedCoefficients && nh >= 2)
-    for (int j = 1; j <= k; ++j) base_ += a[j] * equallySpaced_[static_cast<size_t>(j - 1)];
-  else
-    for (int j = 1; j <= k; ++j) base_ += a[j] * ys_[j - 1];
+  combineFromZero(base_.data(), history, a + 1, k, base_.size());  // 0 + a_1 h_1 + ... + a_k h_k
   if (nh >= k + 1) {
     // DASSL's variable-step error coefficient (Brenan, Campbell and Petzold; docs/integrators.md,
     // "Local error audit on A02"), with psi_i = t_n+1 - t_n+1-i and alpha_i = h / psi_i: the
@@ -324,8 +333,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     // a step stop after one iteration, which cost the 100-link chain 10x in tip error.
     double previous = 0.0, rate = 0.0;
     double firstResidual = 0.0, lastResidual = 0.0, firstSize = 0.0;
-    double firstRaw = 0.0, lastRaw = 0.0;  // the same, unscaled (see kRawResidualNoise)
-    laterChanges_.setZero(yNew_.size());
+    double firstRaw = 0.0;               // the same, unscaled (see kRawResidualNoise)
+    laterChanges_.resize(yNew_.size());  // set at the second iteration (applyCorrectorChange)
     bool atNoise = false;  // accepted by a stall rule (widenForNoise)
     bool converged = false;
     bool onRelativeTarget = false;  // converged on the step's own error, not kTightChange
@@ -339,33 +348,29 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       ypNew_ = cj * yNew_ + base_;
       problem_.residual(tNew, yNew_, ypNew_, g_);
       ++stats_.residualEvaluations;
-      lastRaw = g_.cwiseAbs().maxCoeff<Eigen::PropagateNaN>();
-      if (it == 0) firstRaw = lastRaw;
+      // The unscaled residual's size: at the first iteration here, at later ones only where
+      // the stall rule below reads it (g_ is unchanged until then).
+      if (it == 0) firstRaw = g_.cwiseAbs().maxCoeff<Eigen::PropagateNaN>();
       dy_ = rowScale_.cwiseProduct(g_);
       lastResidual = dy_.cwiseAbs().maxCoeff();
       if (it == 0) firstResidual = lastResidual;
       solver_->solve(dy_);
-      // One pass over the unknowns after the solve: unscale the change, rescale it when the
-      // Jacobian was formed at another cj (it approximates cj dG/dy'; DASSL's factor), apply
-      // it, and take the weighted maximum norms of the change (size) and of the distance from
-      // the predictor (for the convergence target). The same operations in the same order as
-      // separate vector passes, so the same bits; a NaN anywhere makes size NaN.
-      const bool rescale = cjJacobian_ != cj;
-      const double cjFactor = rescale ? 2.0 / (1.0 + cj / cjJacobian_) : 1.0;
-      double size = 0.0, fromPredictor = 0.0;
-      bool nonFinite = false;
-      for (Eigen::Index i = 0; i < dy_.size(); ++i) {
-        double d = dy_(i) * colScale_(i);
-        if (rescale) d *= cjFactor;
-        dy_(i) = d;
-        const double yi = yNew_(i) - d;
-        yNew_(i) = yi;
-        const double change = std::abs(d * correctorWeight_(i));
-        nonFinite = nonFinite || std::isnan(change);
-        size = std::max(size, change);
-        fromPredictor = std::max(fromPredictor, std::abs((yi - yPred_(i)) * correctorWeight_(i)));
-      }
-      if (nonFinite) size = std::numeric_limits<double>::quiet_NaN();
+      // One vectorised pass over the unknowns after the solve: unscale the change, rescale it
+      // when the Jacobian was formed at another cj (it approximates cj dG/dy'; DASSL's factor),
+      // apply it, and add its size to laterChanges_ after the first iteration (widenForNoise).
+      // Then the weighted maximum norm of the change (size; a NaN anywhere makes it NaN); the
+      // distance from the predictor's only where the convergence target asks for it (below).
+      // The same operations on every entry as separate vector passes, so the same bits
+      // (docs/performance.md, "GSTIFF's cost per step, cheaper").
+      bdf::CorrectorUpdate update;
+      update.rescale = cjJacobian_ != cj;
+      if (update.rescale) update.cjFactor = 2.0 / (1.0 + cj / cjJacobian_);
+      using Later = bdf::CorrectorUpdate::Later;
+      update.later = it == 0 ? Later::None : it == 1 ? Later::Assign : Later::Add;
+      bdf::applyCorrectorChange(update, dy_.data(), colScale_.data(), yNew_.data(),
+                                laterChanges_.data(), dy_.size());
+      const double size =
+          (dy_.array() * correctorWeight_.array()).abs().maxCoeff<Eigen::PropagateNaN>();
       if (!std::isfinite(size)) break;  // a NaN or infinite residual: this attempt failed
       // The worst residual and change are for observers (EPRINT) and for the failure report
       // (noted when an attempt fails, below); not computed per iteration otherwise.
@@ -375,7 +380,6 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
             {tNew, h, k, it + 1, lastWorstEq_, lastWorstRes_, lastWorstVar_, lastWorstChange_});
       }
       if (it > 0) rate = size / std::max(previous, 1e-300);
-      if (it > 0) laterChanges_ += dy_.cwiseAbs();
       if (it == 0) firstSize = size;
       previous = size;
       // Converged when the remaining change, about rate / (1 - rate) times the last one, is
@@ -389,6 +393,10 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         break;
       }
       if (it > 0 && rate < 0.9) {
+        // Largest |y - y_pred| w; NaN entries are skipped (as std::max skipped them).
+        const double fromPredictor = ((yNew_ - yPred_).array() * correctorWeight_.array())
+                                         .abs()
+                                         .maxCoeff<Eigen::PropagateNumbers>();
         const double relative = kCorrectorShare * exactHistoryRatio * fromPredictor;
         if (rate / (1.0 - rate) * size <= std::max(kTightChange, relative)) {
           converged = true;
@@ -401,7 +409,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       if (it > 0 && rate >= 0.9 &&
           (size <= kStalledChange || withinRoundOff(cj) ||
            lastResidual <= kResidualNoise * firstResidual ||
-           lastRaw <= kRawResidualNoise * firstRaw)) {
+           g_.cwiseAbs().maxCoeff<Eigen::PropagateNaN>() <= kRawResidualNoise * firstRaw)) {
         converged = true;
         atNoise = true;
         break;
