@@ -345,7 +345,8 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         refresh();
         std::swap(yPred_, yNew_);
       }
-      ypNew_ = cj * yNew_ + base_;
+      // y' at the iterate: here at the first iteration, by the last update at the others.
+      if (it == 0) ypNew_ = cj * yNew_ + base_;
       problem_.residual(tNew, yNew_, ypNew_, g_);
       ++stats_.residualEvaluations;
       // The unscaled residual's size: at the first iteration here, at later ones only where
@@ -357,18 +358,21 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       solver_->solve(dy_);
       // One vectorised pass over the unknowns after the solve: unscale the change, rescale it
       // when the Jacobian was formed at another cj (it approximates cj dG/dy'; DASSL's factor),
-      // apply it, and add its size to laterChanges_ after the first iteration (widenForNoise).
-      // Then the weighted maximum norm of the change (size; a NaN anywhere makes it NaN); the
-      // distance from the predictor's only where the convergence target asks for it (below).
-      // The same operations on every entry as separate vector passes, so the same bits
-      // (docs/performance.md, "GSTIFF's cost per step, cheaper").
+      // apply it, form y' = cj y + base there (the next iteration's and, once converged, the
+      // step's: PATTERN's refresh() forms the same), and add its size to laterChanges_ after
+      // the first iteration (widenForNoise). Then the weighted maximum norm of the change
+      // (size; a NaN anywhere makes it NaN); the distance from the predictor's only where the
+      // convergence target asks for it (below). The same operations on every entry as
+      // separate vector passes, so the same bits (docs/performance.md, "GSTIFF's cost per
+      // step, cheaper").
       bdf::CorrectorUpdate update;
+      update.cj = cj;
       update.rescale = cjJacobian_ != cj;
       if (update.rescale) update.cjFactor = 2.0 / (1.0 + cj / cjJacobian_);
       using Later = bdf::CorrectorUpdate::Later;
       update.later = it == 0 ? Later::None : it == 1 ? Later::Assign : Later::Add;
-      bdf::applyCorrectorChange(update, dy_.data(), colScale_.data(), yNew_.data(),
-                                laterChanges_.data(), dy_.size());
+      bdf::applyCorrectorChange(update, dy_.data(), colScale_.data(), yNew_.data(), base_.data(),
+                                ypNew_.data(), laterChanges_.data(), dy_.size());
       const double size =
           (dy_.array() * correctorWeight_.array()).abs().maxCoeff<Eigen::PropagateNaN>();
       if (!std::isfinite(size)) break;  // a NaN or infinite residual: this attempt failed
@@ -393,10 +397,11 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         break;
       }
       if (it > 0 && rate < 0.9) {
-        // Largest |y - y_pred| w; NaN entries are skipped (as std::max skipped them).
-        const double fromPredictor = ((yNew_ - yPred_).array() * correctorWeight_.array())
-                                         .abs()
-                                         .maxCoeff<Eigen::PropagateNumbers>();
+        // Largest |y - y_pred| w. Every entry is finite here: size is, so every change is (a
+        // non-finite change times its weight, zero included, is NaN or infinite), and the
+        // predictor and the weights are. So the plain maximum is exact.
+        const double fromPredictor =
+            ((yNew_ - yPred_).array() * correctorWeight_.array()).abs().maxCoeff();
         const double relative = kCorrectorShare * exactHistoryRatio * fromPredictor;
         if (rate / (1.0 - rate) * size <= std::max(kTightChange, relative)) {
           converged = true;
@@ -432,7 +437,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     }
     refresh();
   }
-  ypNew_ = cj * yNew_ + base_;
+  // ypNew_ = cj yNew_ + base_ from the converged iteration's update.
   predictorDiff_ = yNew_ - yPred_;
   if (controlledVelocities_) {
     // SI2: its velocities are in this test; their estimates keep the scale they were

@@ -53,13 +53,17 @@ void combineAny(double* out, const double* const* src, const double* w, int m, E
 }
 
 template <bool kRescale, CorrectorUpdate::Later kLater>
-void applyFixed(double cjFactor, double* __restrict dy, const double* __restrict colScale,
-                double* __restrict y, double* __restrict laterChanges, Eigen::Index n) {
+void applyFixed(const CorrectorUpdate& u, double* __restrict dy, const double* __restrict colScale,
+                double* __restrict y, const double* __restrict base, double* __restrict yp,
+                double* __restrict laterChanges, Eigen::Index n) {
+  const double cjFactor = u.cjFactor, cj = u.cj;
   for (Eigen::Index i = 0; i < n; ++i) {
     double d = dy[i] * colScale[i];
     if constexpr (kRescale) d *= cjFactor;
     dy[i] = d;
-    y[i] = y[i] - d;
+    const double yi = y[i] - d;
+    y[i] = yi;
+    yp[i] = cj * yi + base[i];
     if constexpr (kLater == CorrectorUpdate::Later::Assign) laterChanges[i] = std::abs(d);
     if constexpr (kLater == CorrectorUpdate::Later::Add)
       laterChanges[i] = laterChanges[i] + std::abs(d);
@@ -68,15 +72,15 @@ void applyFixed(double cjFactor, double* __restrict dy, const double* __restrict
 
 template <bool kRescale>
 void applyRescaled(const CorrectorUpdate& u, double* dy, const double* colScale, double* y,
-                   double* laterChanges, Eigen::Index n) {
+                   const double* base, double* yp, double* laterChanges, Eigen::Index n) {
   using L = CorrectorUpdate::Later;
   switch (u.later) {
     case L::None:
-      return applyFixed<kRescale, L::None>(u.cjFactor, dy, colScale, y, laterChanges, n);
+      return applyFixed<kRescale, L::None>(u, dy, colScale, y, base, yp, laterChanges, n);
     case L::Assign:
-      return applyFixed<kRescale, L::Assign>(u.cjFactor, dy, colScale, y, laterChanges, n);
+      return applyFixed<kRescale, L::Assign>(u, dy, colScale, y, base, yp, laterChanges, n);
     case L::Add:
-      return applyFixed<kRescale, L::Add>(u.cjFactor, dy, colScale, y, laterChanges, n);
+      return applyFixed<kRescale, L::Add>(u, dy, colScale, y, base, yp, laterChanges, n);
   }
 }
 
@@ -92,11 +96,11 @@ void combine(double* out, const double* const* src, const double* w, int m, Eige
 }
 
 void applyCorrectorChange(const CorrectorUpdate& u, double* dy, const double* colScale, double* y,
-                          double* laterChanges, Eigen::Index n) {
+                          const double* base, double* yp, double* laterChanges, Eigen::Index n) {
   if (u.rescale)
-    applyRescaled<true>(u, dy, colScale, y, laterChanges, n);
+    applyRescaled<true>(u, dy, colScale, y, base, yp, laterChanges, n);
   else
-    applyRescaled<false>(u, dy, colScale, y, laterChanges, n);
+    applyRescaled<false>(u, dy, colScale, y, base, yp, laterChanges, n);
 }
 
 }  // namespace openmss::solvers::bdf

@@ -19,14 +19,16 @@ void combineFromZero(double* out, const double* const* src, const double* w, int
 void combine(double* out, const double* const* src, const double* w, int m, Eigen::Index n);
 
 // One corrector update after the linear solve: d = dy colScale (times cjFactor when rescale),
-// stored back into dy, then y -= d; with later, laterChanges = |d| (first later iteration) or
+// stored back into dy, then y -= d and yp = cj y + base at the new y (the next iteration's and
+// the step's derivative); with later, laterChanges = |d| (first later iteration) or
 // laterChanges += |d| (the others).
 struct CorrectorUpdate {
   bool rescale = false;
   double cjFactor = 1.0;
+  double cj = 0.0;
   enum class Later { None, Assign, Add } later = Later::None;
 };
 void applyCorrectorChange(const CorrectorUpdate& u, double* dy, const double* colScale, double* y,
-                          double* laterChanges, Eigen::Index n);
+                          const double* base, double* yp, double* laterChanges, Eigen::Index n);
 
 }  // namespace openmss::solvers::bdf
