@@ -13,7 +13,10 @@ struct KluLinearSolver::Impl {
   klu_numeric* numeric = nullptr;
 };
 
-KluLinearSolver::KluLinearSolver() : impl_(new Impl) { klu_defaults(&impl_->common); }
+KluLinearSolver::KluLinearSolver() : impl_(new Impl) {
+  klu_defaults(&impl_->common);
+  setOptions(Options{});
+}
 
 KluLinearSolver::~KluLinearSolver() {
   release();

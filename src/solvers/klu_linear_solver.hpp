@@ -30,15 +30,20 @@ class KluLinearSolver final : public LinearSolver {
   // Entries of the L and U factors of the last factorisation (the fill; a solve reads each once).
   long factorNonZeros() const;
   // The floating-point operations of a factorisation as the last analysis predicts them
-  // (AMD's count on the diagonal blocks of the BTF form; 0 before an analysis or with COLAMD).
+  // (AMD's count on the whole matrix, or on the diagonal blocks with the block triangular form;
+  // 0 before an analysis or with COLAMD).
   double predictedFlops() const;
 
   // KLU's ordering choices, applied at the next analyze(): fill-reducing ordering AMD (0) or
   // COLAMD (1), block triangular form first, the partial-pivoting tolerance (a diagonal entry is
-  // kept as pivot when at least this fraction of the column's largest).
+  // kept as pivot when at least this fraction of the column's largest). No block triangular
+  // form by default: its maximum transversal took 0.47 G instructions per analysis of the
+  // 1000-link chain's Newton matrix and about 3.5 s at 10,000 links (it grows like N^2 on
+  // these saddle-point matrices), while the factors are as large without it (docs/performance.md,
+  // "KLU without the block triangular form").
   struct Options {
     int ordering = 0;
-    bool btf = true;
+    bool btf = false;
     double pivotTolerance = 1e-3;
   };
   void setOptions(const Options& options);
