@@ -9,9 +9,9 @@ void SparseLinearSolver::analyze(const Eigen::SparseMatrix<double>& pattern) {
   columnStart_.assign(pattern.outerIndexPtr(), pattern.outerIndexPtr() + n + 1);
   rowIndex_.assign(pattern.innerIndexPtr(), pattern.innerIndexPtr() + columnStart_[n]);
   ++analyses_;
-  // KLU's analysis (AMD on the whole matrix; no block triangular form, KluLinearSolver::Options)
-  // is needed for KLU anyway and costs a few per cent of a heavy factorisation; its flop
-  // estimate is the one the choice of solver needs.
+  // KLU's analysis (BTF, then AMD per block) is needed for KLU anyway and costs a few per cent
+  // of a heavy factorisation; its flop estimate counts the diagonal blocks, which is all that
+  // either solver factorises with fill.
   klu_.analyze(pattern);
   predictedFlops_ = klu_.predictedFlops();
   if (predictedFlops_ >= supernodalFlops_) {
