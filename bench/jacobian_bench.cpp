@@ -26,6 +26,7 @@
 #include "solvers/dense_linear_solver.hpp"
 #include "solvers/hht_integrator.hpp"
 #include "solvers/klu_linear_solver.hpp"
+#include "solvers/nonzero_pattern.hpp"
 
 namespace {
 
@@ -143,13 +144,16 @@ BENCHMARK(BM_KluFactorSolve)->Arg(1)->Arg(3)->Arg(5)->Arg(10)->Arg(100)->Arg(100
     ->Unit(benchmark::kMicrosecond);
 
 // The corrector's linear solve, one per iteration (several per step; a factorisation only every
-// ten steps or so), by KLU's choices: range(1) = 0 BTF + AMD (the default), 1 COLAMD, 2 without
-// BTF. Counters: unknowns of the factorised matrix, entries of its L and U. Eliminating the
-// positions before KLU was measured as well and not kept (docs/theory.md §9a).
+// ten steps or so), by KLU's choices: range(1) = 0 the default (BTF first, its maximum
+// transversal limited to 30 entries' work per entry, then AMD), 1 COLAMD, 2 without BTF, 3 BTF
+// without the work limit (the default before 2026-11-29). Counters: unknowns of the
+// factorised matrix, entries of its L and U. Eliminating the positions before KLU was measured as
+// well and not kept (docs/theory.md §9a).
 solvers::KluLinearSolver::Options variantOptions(int variant) {
   solvers::KluLinearSolver::Options o;
   if (variant == 1) o.ordering = 1;
   if (variant == 2) o.btf = false;
+  if (variant == 3) o.maxWork = 0.0;
   return o;
 }
 
@@ -194,6 +198,21 @@ void BM_Factor(benchmark::State& state) {
   count(state, c);
 }
 BENCHMARK(BM_Factor)->ArgsProduct({{10, 100, 1000}, {0}})->Unit(benchmark::kMicrosecond);
+
+// The symbolic analysis of a new pattern (the integrator takes a few per run) by the variants
+// above: without its work limit BTF's maximum transversal grows like N^2 on the planar chains'
+// Newton matrices (docs/performance.md, "KLU's block triangular form, bounded").
+void BM_Analyze(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)));
+  // The pattern the integrator analyses: the exact zeros of the planar chain left out.
+  solvers::NonzeroPattern nonzero;
+  const Eigen::SparseMatrix<double> jac = nonzero.select(scaledMatrix(c));
+  solvers::KluLinearSolver klu;
+  klu.setOptions(variantOptions(static_cast<int>(state.range(1))));
+  for (auto _ : state) klu.analyze(jac);
+  count(state, c);
+}
+BENCHMARK(BM_Analyze)->ArgsProduct({{100, 1000}, {0, 2, 3}})->Unit(benchmark::kMillisecond);
 
 void BM_DenseLuFactorSolve(benchmark::State& state) {
   Chain& c = chain(static_cast<int>(state.range(0)));

@@ -13,7 +13,10 @@ struct KluLinearSolver::Impl {
   klu_numeric* numeric = nullptr;
 };
 
-KluLinearSolver::KluLinearSolver() : impl_(new Impl) { klu_defaults(&impl_->common); }
+KluLinearSolver::KluLinearSolver() : impl_(new Impl) {
+  klu_defaults(&impl_->common);
+  setOptions(Options{});
+}
 
 KluLinearSolver::~KluLinearSolver() {
   release();
@@ -24,6 +27,10 @@ long KluLinearSolver::factorNonZeros() const {
   return impl_->numeric ? static_cast<long>(impl_->numeric->lnz) + impl_->numeric->unz : 0;
 }
 
+bool KluLinearSolver::transversalStopped() const {
+  return impl_->symbolic && impl_->common.btf && impl_->common.work < 0.0;  // KLU's flag: -1
+}
+
 double KluLinearSolver::predictedFlops() const {
   return impl_->symbolic && impl_->symbolic->ordering == 0 ? impl_->symbolic->est_flops : 0.0;
 }
@@ -32,6 +39,7 @@ void KluLinearSolver::setOptions(const Options& options) {
   impl_->common.ordering = options.ordering;
   impl_->common.btf = options.btf ? 1 : 0;
   impl_->common.tol = options.pivotTolerance;
+  impl_->common.maxwork = options.maxWork;
   columnStart_.clear();  // the next factor() analyses anew
   rowIndex_.clear();
 }

@@ -27,6 +27,8 @@ class KluLinearSolver final : public LinearSolver {
   int refactorizations() const { return refactor_; }
   // Symbolic analyses (orderings) taken.
   int analyses() const { return analyses_; }
+  // The last analysis's maximum transversal stopped at Options::maxWork (blocks coarser).
+  bool transversalStopped() const;
   // Entries of the L and U factors of the last factorisation (the fill; a solve reads each once).
   long factorNonZeros() const;
   // The floating-point operations of a factorisation as the last analysis predicts them
@@ -34,12 +36,20 @@ class KluLinearSolver final : public LinearSolver {
   double predictedFlops() const;
 
   // KLU's ordering choices, applied at the next analyze(): fill-reducing ordering AMD (0) or
-  // COLAMD (1), block triangular form first, the partial-pivoting tolerance (a diagonal entry is
-  // kept as pivot when at least this fraction of the column's largest).
+  // COLAMD (1), block triangular form (BTF) first, the partial-pivoting tolerance (a diagonal
+  // entry is kept as pivot when at least this fraction of the column's largest), and the work
+  // BTF's maximum transversal may do, in units of the matrix's entries (0: no limit). Its search
+  // for a zero-free diagonal runs along the chains (about N^2 work on the planar chains'
+  // patterns: 216 entries' worth per entry at 1000 links, 0.47 G instructions per analysis,
+  // about 3.5 s at 10,000), while on the models measured that finish it below the limit (A02,
+  // the 100-link chains: 0.8-22) the work is what it was. Stopped at the limit, BTF completes
+  // the permutation and finds the blocks of that: still block triangular, so still exact, only
+  // coarser (docs/performance.md, "KLU's block triangular form, bounded").
   struct Options {
     int ordering = 0;
     bool btf = true;
     double pivotTolerance = 1e-3;
+    double maxWork = 30.0;
   };
   void setOptions(const Options& options);
 

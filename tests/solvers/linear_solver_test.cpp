@@ -63,6 +63,43 @@ TEST(LinearSolver, KluEqualsDenseLu) {
   }
 }
 
+// BTF's maximum transversal stopped at its work limit (as on the large planar chains,
+// docs/performance.md "KLU's block triangular form, bounded") leaves a coarser block triangular
+// form, not an approximate one: the solve is exact as before.
+TEST(LinearSolver, KluWithTheTransversalStoppedSolvesExactly) {
+  // Column j < n-1 holds rows j and j+1, the last column row 0 only: a greedy matching gives
+  // column j row j and leaves the last column an augmenting path through all n columns (the
+  // chains' case in miniature). Its one perfect matching is the cycle (values 1), so it is
+  // nonsingular and well conditioned; the diagonal entries (0.5) mix the unknowns.
+  const int n = 400;
+  std::vector<Eigen::Triplet<double>> t;
+  for (int j = 0; j + 1 < n; ++j) {
+    t.emplace_back(j, j, 0.5);
+    t.emplace_back(j + 1, j, 1.0);
+  }
+  t.emplace_back(0, n - 1, 1.0);
+  Eigen::SparseMatrix<double> a(n, n);
+  a.setFromTriplets(t.begin(), t.end());
+  a.makeCompressed();
+  const Eigen::VectorXd b = Eigen::VectorXd::Random(n);
+  KluLinearSolver full, stopped;
+  KluLinearSolver::Options tight;
+  tight.maxWork = 0.1;  // the path needs about n steps, 1/2 of the entries' count
+  stopped.setOptions(tight);
+  full.analyze(a);
+  stopped.analyze(a);
+  EXPECT_FALSE(full.transversalStopped());
+  ASSERT_TRUE(stopped.transversalStopped());
+  ASSERT_TRUE(full.factor(a));
+  ASSERT_TRUE(stopped.factor(a));
+  Eigen::VectorXd xf = b, xs = b;
+  full.solve(xf);
+  stopped.solve(xs);
+  // Both backward stable: the residual is round-off times |A| |x| (as in KluEqualsDenseLu).
+  EXPECT_LE((a * xs - b).cwiseAbs().maxCoeff(), 1e-12 * (1.0 + xs.cwiseAbs().maxCoeff()));
+  EXPECT_LE(relativeDifference(xs, xf), 1e-12);
+}
+
 TEST(LinearSolver, KluRefactorsOnTheAnalysedPattern) {
   std::mt19937 rng(2);
   const int n = 200;
