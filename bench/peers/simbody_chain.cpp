@@ -3,22 +3,24 @@
 //   simbody_chain KIND N END ACCURACY [INTEGRATOR]
 //
 // KIND: chain-planar | chain-spatial | chain-stiff4 | chain-stiff8 (the stiff chains' joint
-// springs as MobilityLinearSpring and MobilityLinearDamper). INTEGRATOR: RKMerson (default)
+// springs as MobilityLinearSpring and MobilityLinearDamper) | bushing (the bushing chain: see
+// buildBushingChain). INTEGRATOR: RKMerson (default)
 // or CPodes (Simbody's implicit BDF for stiff systems). Builds the chain of
 // bench/model_generators.cpp as a tree of Pin mobilizers (the same inertias, gravity and
 // initial state), integrates with the integrator at the given accuracy to END, and prints
 // key=value lines: wall times, steps, the tip's final position and velocity, and peak
 // resident memory.
-// The four-bar row and the bushing chain are not built here (not yet).
-
-#include <sys/resource.h>
+// The four-bar row is not built here (not yet).
 
 #include <Simbody.h>
+#include <sys/resource.h>
+
 #include <chrono>
 #include <cstdio>
 #include <iostream>
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "../model_generators.hpp"
 
@@ -32,13 +34,63 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
   return std::chrono::duration<double>(b - a).count();
 }
 
+// The bushing chain (bench/model_generators.cpp, bushingChain): one Free mobilizer per block,
+// body frame at its centre of mass with ground-aligned axes, so q = 0 is the initial pose.
+// BUSHING -> Force::LinearBushing with F on the parent (ADAMS's J marker) and M on the block
+// (the I marker), both at the shared point and ground-aligned, as the generator writes them.
+// Both put the force on M/I at its origin and the reaction on F/J at that same point, with
+// translations and their damping rate (velocity seen from F/J) along the F/J axes: identical.
+// The rotations differ beyond first order (docs/theory.md, "BUSHING, FIELD, BEAM"): OpenMSS
+// uses projected angles, damps the relative angular velocity and applies the torque along the
+// J axes; Simbody uses body-fixed x-y-z Euler angles, damps their rates and maps the
+// generalized moments through the Euler kinematics. The two agree to first order in the
+// relative rotation; the difference is second order (measured in docs/performance.md).
+// Simbody orders the six constants rotations first. SPRINGDAMPER, TRANSLATIONAL ->
+// TwoPointLinearSpring (free length springLength, the initial centre distance) plus
+// TwoPointLinearDamper between the centres (the first block's to the ground origin).
+SimTK::MobilizedBody buildBushingChain(const ChainModel& model,
+                                       SimTK::SimbodyMatterSubsystem& matter,
+                                       SimTK::GeneralForceSubsystem& forces) {
+  using namespace SimTK;
+  const auto& e = model.elastic;
+  const double kr = e.bushingTorsionStiffness, kt = e.bushingStiffness;
+  const double cr = e.bushingTorsionDamping, ct = e.bushingDamping;
+  const Vec6 stiffness(kr, kr, kr, kt, kt, kt), damping(cr, cr, cr, ct, ct, ct);
+  std::vector<MobilizedBody> blocks;
+  for (std::size_t i = 0; i < model.bodies.size(); ++i) {
+    const auto& b = model.bodies[i];
+    const auto I = openmss::bench::inertiaTensorInGround(b);
+    const Inertia aboutCom(Mat33(I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]));
+    const Body::Rigid body(MassProperties(b.mass, Vec3(0), aboutCom));
+    blocks.push_back(MobilizedBody::Free(matter.Ground(), Transform(toSimTK(b.centerOfMass)), body,
+                                         Transform()));
+  }
+  for (const auto& c : model.connections) {
+    const MobilizedBody& child = blocks[c.child];
+    const MobilizedBody& parent = c.parent < 0 ? matter.Ground() : blocks[c.parent];
+    // Body origins: the blocks' centres (ground-aligned at q = 0), ground's at its origin.
+    const Vec3 parentOrigin = c.parent < 0 ? Vec3(0) : toSimTK(model.bodies[c.parent].centerOfMass);
+    const Vec3 childOrigin = toSimTK(model.bodies[c.child].centerOfMass);
+    const Vec3 point = toSimTK(c.point);
+    Force::LinearBushing(forces, parent, Transform(point - parentOrigin), child,
+                         Transform(point - childOrigin), stiffness, damping);
+    const Vec3 parentAnchor = toSimTK(c.parentAnchor) - parentOrigin;
+    const Vec3 childAnchor = toSimTK(c.childAnchor) - childOrigin;
+    Force::TwoPointLinearSpring(forces, parent, parentAnchor, child, childAnchor, e.springStiffness,
+                                c.springLength);
+    Force::TwoPointLinearDamper(forces, parent, parentAnchor, child, childAnchor, e.springDamping);
+  }
+  return blocks.back();
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
   using namespace SimTK;
   if (argc != 5 && argc != 6) {
-    std::cerr << "usage: simbody_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8 N END "
-                 "ACCURACY [RKMerson|CPodes]\n";
+    std::cerr
+        << "usage: simbody_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8|bushing N "
+           "END ACCURACY [RKMerson|CPodes]\n";
     return 64;
   }
   const std::string kind = argv[1];
@@ -48,7 +100,7 @@ int main(int argc, char** argv) {
     return 64;
   }
   if (kind != "chain-planar" && kind != "chain-spatial" && kind != "chain-stiff4" &&
-      kind != "chain-stiff8") {
+      kind != "chain-stiff8" && kind != "bushing") {
     std::cerr << "simbody_chain: " << kind << " is not built for Simbody (see the file header)\n";
     return 3;
   }
@@ -64,32 +116,40 @@ int main(int argc, char** argv) {
   Force::UniformGravity gravity(forces, matter, toSimTK(model.gravity));
   // Body frames sit at each link's proximal joint point with ground-aligned axes; the Pin's
   // mobilizer frames turn its z axis onto the joint axis, so q = 0 is the initial configuration.
-  MobilizedBody parent = matter.Ground();
-  Vec3 parentOrigin(0);
   MobilizedBody last;
-  for (int i = 0; i < static_cast<int>(model.bodies.size()); ++i) {
-    const auto& b = model.bodies[i];
-    const auto I = openmss::bench::inertiaTensorInGround(b);
-    const Vec3 com = toSimTK(b.centerOfMass) - toSimTK(b.proximal);
-    const Inertia aboutCom(Mat33(I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]));
-    // MassProperties wants the inertia about the body origin: shift from the centre of mass to
-    // the origin, which lies at -com from it.
-    const Body::Rigid body(MassProperties(b.mass, com, aboutCom.shiftFromMassCenter(-com, b.mass)));
-    const Rotation zOntoAxis(UnitVec3(toSimTK(model.joints[i].axis)), ZAxis);
-    const Vec3 origin = toSimTK(b.proximal);
-    MobilizedBody::Pin pin(parent, Transform(zOntoAxis, origin - parentOrigin), body,
-                           Transform(zOntoAxis, Vec3(0)));
-    if (model.jointSpring.stiffness > 0.0) {
-      Force::MobilityLinearSpring(forces, pin, MobilizerQIndex(0), model.jointSpring.stiffness,
-                                  0.0);
-      Force::MobilityLinearDamper(forces, pin, MobilizerUIndex(0), model.jointSpring.damping);
+  Vec3 tipStation;
+  if (kind == "bushing") {
+    last = buildBushingChain(model, matter, forces);
+    const auto& tip = model.bodies[model.tipBody];
+    tipStation = toSimTK(tip.distal) - toSimTK(tip.centerOfMass);
+  } else {
+    MobilizedBody parent = matter.Ground();
+    Vec3 parentOrigin(0);
+    for (int i = 0; i < static_cast<int>(model.bodies.size()); ++i) {
+      const auto& b = model.bodies[i];
+      const auto I = openmss::bench::inertiaTensorInGround(b);
+      const Vec3 com = toSimTK(b.centerOfMass) - toSimTK(b.proximal);
+      const Inertia aboutCom(Mat33(I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]));
+      // MassProperties wants the inertia about the body origin: shift from the centre of mass to
+      // the origin, which lies at -com from it.
+      const Body::Rigid body(
+          MassProperties(b.mass, com, aboutCom.shiftFromMassCenter(-com, b.mass)));
+      const Rotation zOntoAxis(UnitVec3(toSimTK(model.joints[i].axis)), ZAxis);
+      const Vec3 origin = toSimTK(b.proximal);
+      MobilizedBody::Pin pin(parent, Transform(zOntoAxis, origin - parentOrigin), body,
+                             Transform(zOntoAxis, Vec3(0)));
+      if (model.jointSpring.stiffness > 0.0) {
+        Force::MobilityLinearSpring(forces, pin, MobilizerQIndex(0), model.jointSpring.stiffness,
+                                    0.0);
+        Force::MobilityLinearDamper(forces, pin, MobilizerUIndex(0), model.jointSpring.damping);
+      }
+      parent = pin;
+      parentOrigin = origin;
+      last = pin;
     }
-    parent = pin;
-    parentOrigin = origin;
-    last = pin;
+    const auto& tipBody = model.bodies.back();
+    tipStation = toSimTK(tipBody.distal) - toSimTK(tipBody.proximal);
   }
-  const auto& tipBody = model.bodies.back();
-  const Vec3 tipStation = toSimTK(tipBody.distal) - toSimTK(tipBody.proximal);
 
   system.realizeTopology();
   State state = system.getDefaultState();
