@@ -16,7 +16,9 @@
 #include <sys/resource.h>
 
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <iostream>
 #include <memory>
 #include <string>
@@ -33,6 +35,50 @@ SimTK::Vec3 toSimTK(const openmss::bench::Vec3& v) { return SimTK::Vec3(v[0], v[
 double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_clock::time_point b) {
   return std::chrono::duration<double>(b - a).count();
 }
+
+// OpenMSS's BUSHING law (docs/theory.md, "BUSHING, FIELD, BEAM") as a Simbody custom force,
+// for the equivalence check only (OPENMSS_SIMBODY_ADAMS_BUSHING=1): projected angles, the
+// relative angular velocity damped, force and torque along the J (F) axes on I (M), the
+// reaction on J at I's location. It isolates the angle-convention difference to
+// Force::LinearBushing; the benchmark runs Simbody's own element.
+class AdamsBushing : public SimTK::Force::Custom::Implementation {
+ public:
+  AdamsBushing(SimTK::MobilizedBody j, SimTK::Vec3 onJ, SimTK::MobilizedBody i, SimTK::Vec3 onI,
+               SimTK::Vec6 k, SimTK::Vec6 c)
+      : j_(j), i_(i), onJ_(onJ), onI_(onI), k_(k), c_(c) {}
+  void calcForce(const SimTK::State& s, SimTK::Vector_<SimTK::SpatialVec>& bodyForces,
+                 SimTK::Vector_<SimTK::Vec3>&, SimTK::Vector&) const override {
+    using namespace SimTK;
+    const Rotation& rJ = j_.getBodyRotation(s);
+    const Rotation& rI = i_.getBodyRotation(s);
+    const Vec3 pI = i_.findStationLocationInGround(s, onI_);
+    const Vec3 d = pI - j_.findStationLocationInGround(s, onJ_);
+    const Vec3 wJ = j_.getBodyAngularVelocity(s);
+    const Vec3 v = ~rJ * (i_.findStationVelocityInGround(s, onI_) -
+                          j_.findStationVelocityInGround(s, onJ_) - wJ % d);
+    const Vec3 w = ~rJ * (i_.getBodyAngularVelocity(s) - wJ);
+    const Vec3 xI = rI.x(), zI = rI.z(), xJ = rJ.x(), yJ = rJ.y(), zJ = rJ.z();
+    const Vec3 angles(std::atan2(-dot(zI, yJ), dot(zI, zJ)), std::atan2(dot(zI, xJ), dot(zI, zJ)),
+                      std::atan2(dot(xI, yJ), dot(xI, xJ)));
+    const Vec3 q = ~rJ * d;
+    Vec3 f, t;
+    for (int a = 0; a < 3; ++a) {
+      t[a] = -k_[a] * angles[a] - c_[a] * w[a];
+      f[a] = -k_[a + 3] * q[a] - c_[a + 3] * v[a];
+    }
+    const Vec3 fG = rJ * f, tG = rJ * t;
+    i_.applyForceToBodyPoint(s, onI_, fG, bodyForces);
+    i_.applyBodyTorque(s, tG, bodyForces);
+    j_.applyForceToBodyPoint(s, j_.findStationAtGroundPoint(s, pI), -fG, bodyForces);
+    j_.applyBodyTorque(s, -tG, bodyForces);
+  }
+  SimTK::Real calcPotentialEnergy(const SimTK::State&) const override { return 0; }
+
+ private:
+  SimTK::MobilizedBody j_, i_;
+  SimTK::Vec3 onJ_, onI_;
+  SimTK::Vec6 k_, c_;
+};
 
 // The bushing chain (bench/model_generators.cpp, bushingChain): one Free mobilizer per block,
 // body frame at its centre of mass with ground-aligned axes, so q = 0 is the initial pose.
@@ -56,6 +102,8 @@ SimTK::MobilizedBody buildBushingChain(const ChainModel& model,
   const double kr = e.bushingTorsionStiffness, kt = e.bushingStiffness;
   const double cr = e.bushingTorsionDamping, ct = e.bushingDamping;
   const Vec6 stiffness(kr, kr, kr, kt, kt, kt), damping(cr, cr, cr, ct, ct, ct);
+  const char* flag = std::getenv("OPENMSS_SIMBODY_ADAMS_BUSHING");
+  const bool adamsLaw = flag != nullptr && std::string(flag) == "1";
   std::vector<MobilizedBody> blocks;
   for (std::size_t i = 0; i < model.bodies.size(); ++i) {
     const auto& b = model.bodies[i];
@@ -72,8 +120,12 @@ SimTK::MobilizedBody buildBushingChain(const ChainModel& model,
     const Vec3 parentOrigin = c.parent < 0 ? Vec3(0) : toSimTK(model.bodies[c.parent].centerOfMass);
     const Vec3 childOrigin = toSimTK(model.bodies[c.child].centerOfMass);
     const Vec3 point = toSimTK(c.point);
-    Force::LinearBushing(forces, parent, Transform(point - parentOrigin), child,
-                         Transform(point - childOrigin), stiffness, damping);
+    if (adamsLaw)
+      Force::Custom(forces, new AdamsBushing(parent, point - parentOrigin, child,
+                                             point - childOrigin, stiffness, damping));
+    else
+      Force::LinearBushing(forces, parent, Transform(point - parentOrigin), child,
+                           Transform(point - childOrigin), stiffness, damping);
     const Vec3 parentAnchor = toSimTK(c.parentAnchor) - parentOrigin;
     const Vec3 childAnchor = toSimTK(c.childAnchor) - childOrigin;
     Force::TwoPointLinearSpring(forces, parent, parentAnchor, child, childAnchor, e.springStiffness,
