@@ -36,6 +36,39 @@ double seconds(std::chrono::steady_clock::time_point a, std::chrono::steady_cloc
   return std::chrono::duration<double>(b - a).count();
 }
 
+// The pendulum chains: a tree of Pin mobilizers (see the file header); returns the last link.
+SimTK::MobilizedBody buildPinChain(const ChainModel& model, SimTK::SimbodyMatterSubsystem& matter,
+                                   SimTK::GeneralForceSubsystem& forces) {
+  using namespace SimTK;
+  // Body frames sit at each link's proximal joint point with ground-aligned axes; the Pin's
+  // mobilizer frames turn its z axis onto the joint axis, so q = 0 is the initial configuration.
+  MobilizedBody parent = matter.Ground();
+  Vec3 parentOrigin(0);
+  MobilizedBody last;
+  for (int i = 0; i < static_cast<int>(model.bodies.size()); ++i) {
+    const auto& b = model.bodies[i];
+    const auto I = openmss::bench::inertiaTensorInGround(b);
+    const Vec3 com = toSimTK(b.centerOfMass) - toSimTK(b.proximal);
+    const Inertia aboutCom(Mat33(I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]));
+    // MassProperties wants the inertia about the body origin: shift from the centre of mass to
+    // the origin, which lies at -com from it.
+    const Body::Rigid body(MassProperties(b.mass, com, aboutCom.shiftFromMassCenter(-com, b.mass)));
+    const Rotation zOntoAxis(UnitVec3(toSimTK(model.joints[i].axis)), ZAxis);
+    const Vec3 origin = toSimTK(b.proximal);
+    MobilizedBody::Pin pin(parent, Transform(zOntoAxis, origin - parentOrigin), body,
+                           Transform(zOntoAxis, Vec3(0)));
+    if (model.jointSpring.stiffness > 0.0) {
+      Force::MobilityLinearSpring(forces, pin, MobilizerQIndex(0), model.jointSpring.stiffness,
+                                  0.0);
+      Force::MobilityLinearDamper(forces, pin, MobilizerUIndex(0), model.jointSpring.damping);
+    }
+    parent = pin;
+    parentOrigin = origin;
+    last = pin;
+  }
+  return last;
+}
+
 // OpenMSS's BUSHING law (docs/theory.md, "BUSHING, FIELD, BEAM") as a Simbody custom force,
 // the benchmark's bushing: projected angles, the relative angular velocity damped, force and
 // torque along the J (F) axes on I (M), the reaction on J at I's location. Simbody's own
@@ -179,30 +212,7 @@ int main(int argc, char** argv) {
     const auto& tip = model.bodies[model.tipBody];
     tipStation = toSimTK(tip.distal) - toSimTK(tip.centerOfMass);
   } else {
-    MobilizedBody parent = matter.Ground();
-    Vec3 parentOrigin(0);
-    for (int i = 0; i < static_cast<int>(model.bodies.size()); ++i) {
-      const auto& b = model.bodies[i];
-      const auto I = openmss::bench::inertiaTensorInGround(b);
-      const Vec3 com = toSimTK(b.centerOfMass) - toSimTK(b.proximal);
-      const Inertia aboutCom(Mat33(I[0], I[1], I[2], I[3], I[4], I[5], I[6], I[7], I[8]));
-      // MassProperties wants the inertia about the body origin: shift from the centre of mass to
-      // the origin, which lies at -com from it.
-      const Body::Rigid body(
-          MassProperties(b.mass, com, aboutCom.shiftFromMassCenter(-com, b.mass)));
-      const Rotation zOntoAxis(UnitVec3(toSimTK(model.joints[i].axis)), ZAxis);
-      const Vec3 origin = toSimTK(b.proximal);
-      MobilizedBody::Pin pin(parent, Transform(zOntoAxis, origin - parentOrigin), body,
-                             Transform(zOntoAxis, Vec3(0)));
-      if (model.jointSpring.stiffness > 0.0) {
-        Force::MobilityLinearSpring(forces, pin, MobilizerQIndex(0), model.jointSpring.stiffness,
-                                    0.0);
-        Force::MobilityLinearDamper(forces, pin, MobilizerUIndex(0), model.jointSpring.damping);
-      }
-      parent = pin;
-      parentOrigin = origin;
-      last = pin;
-    }
+    last = buildPinChain(model, matter, forces);
     const auto& tipBody = model.bodies.back();
     tipStation = toSimTK(tipBody.distal) - toSimTK(tipBody.proximal);
   }
