@@ -27,8 +27,9 @@ import time
 # The stiff chains run 1 s: an explicit peer's step is held near 1e-5 s by their joint modes.
 END_TIME = {"chain-planar": 10.0, "chain-spatial": 10.0, "chain-stiff4": 1.0, "chain-stiff8": 1.0,
             "fourbar": 0.5, "bushing": 1.0}
-# What bench/peers/ builds.
-PEER_MODELS = {"chain-planar", "chain-spatial", "chain-stiff4", "chain-stiff8"}
+# What bench/peers/ builds: Simbody also the bushing chain; MuJoCo has no bushing element.
+PEER_MODELS = {"chain-planar", "chain-spatial", "chain-stiff4", "chain-stiff8", "bushing"}
+MUJOCO_MODELS = PEER_MODELS - {"bushing"}
 STIFF_MODELS = {"chain-stiff4", "chain-stiff8", "bushing"}
 
 # (INTEGRATOR, ERROR) settings. GSTIFF (the default) and WSTIFF from ERROR = 1e-3 down, so
@@ -267,7 +268,7 @@ def main():
                                   lambda a=a, m=m, label=label: run_peer(
                                       args.simbody, "Simbody", kind, n, a, args.peer_timeout,
                                       label, m), args.peer_timeout))
-                if peers and args.mujoco and i < len(mujoco_ladder):
+                if kind in MUJOCO_MODELS and args.mujoco and i < len(mujoco_ladder):
                     m, h = mujoco_ladder[i]
                     label = f"{m} dt={h:g}"
                     plans.append(("MuJoCo", label, True,
@@ -459,8 +460,8 @@ Sizes: N = {', '.join(str(s) for s in sizes)}. Generated {time.strftime('%Y-%m-%
   are measured against the exact solution in docs/validation.md ("IFToMM A02"). OpenMSS only:
   MuJoCo closes loops with soft constraints, and the Simbody program does not build loops yet.
 - **bushing**: N free 1 kg blocks each held to the previous one by a BUSHING and a
-  translational SPRINGDAMPER (6N DOF, stiff), 1 s. OpenMSS only (no MuJoCo bushing element;
-  Simbody's LinearBushing uses Euler angles, not ADAMS's small-angle rotations).
+  translational SPRINGDAMPER (6N DOF, stiff), 1 s. OpenMSS and Simbody (the BUSHING law as a
+  custom force: see "The bushing chain against Simbody"); not MuJoCo (no bushing element).
 - **Settings**: OpenMSS {openmss_settings} (MERSON not on the stiff models);
   Simbody RungeKuttaMersonIntegrator at accuracy {simbody}
   (1e-6 is the issue's figure), on the stiff chains also CPodesIntegrator (implicit BDF) at the
