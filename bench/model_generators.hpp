@@ -108,6 +108,8 @@ ChainModel fourBarChain(int loops);
 // N free blocks hanging in a tilted line, each held to the previous (the first to ground) by a
 // BUSHING and a translational SPRINGDAMPER: 6N degrees of freedom.
 ChainModel bushingChain(int links, const ElasticParameters& parameters = {});
+// The stiff variant's constants ("bushing-stiff"): 100x the stiffness, damping ratio ~0.1.
+ElasticParameters stiffBushingParameters();
 
 // The model as an ADAMS data set. Numbering: ground is PART/1, body i is PART/(i+2); part p
 // owns markers 10p (centre of mass; on ground the origin) and 10p+1 (the tip point, distal end).

@@ -26,11 +26,12 @@ import time
 # chain is stiff (ω up to ~300 rad/s) and 1 s covers many periods.
 # The stiff chains run 1 s: an explicit peer's step is held near 1e-5 s by their joint modes.
 END_TIME = {"chain-planar": 10.0, "chain-spatial": 10.0, "chain-stiff4": 1.0, "chain-stiff8": 1.0,
-            "fourbar": 0.5, "bushing": 1.0}
+            "fourbar": 0.5, "bushing": 1.0, "bushing-stiff": 1.0}
 # What bench/peers/ builds: Simbody also the bushing chain; MuJoCo has no bushing element.
-PEER_MODELS = {"chain-planar", "chain-spatial", "chain-stiff4", "chain-stiff8", "bushing"}
-MUJOCO_MODELS = PEER_MODELS - {"bushing"}
-STIFF_MODELS = {"chain-stiff4", "chain-stiff8", "bushing"}
+PEER_MODELS = {"chain-planar", "chain-spatial", "chain-stiff4", "chain-stiff8", "bushing",
+               "bushing-stiff"}
+MUJOCO_MODELS = PEER_MODELS - {"bushing", "bushing-stiff"}
+STIFF_MODELS = {"chain-stiff4", "chain-stiff8", "bushing", "bushing-stiff"}
 
 # (INTEGRATOR, ERROR) settings. GSTIFF (the default) and WSTIFF from ERROR = 1e-3 down, so
 # that "matched accuracy" can pair a peer run with the OpenMSS setting of about its tip error
@@ -62,7 +63,8 @@ MUJOCO_STIFF_LADDER = {"chain-stiff4": [("RK4", 1e-3), ("RK4", 1e-4), ("implicit
 # of Simbody's where it has. MERSON at 1e-8 (its error falls about as fast as ERROR: 6e-12 m
 # at the tip of the planar 100-chain at 1e-9) also runs the 1000-link chains, where GSTIFF at
 # 1e-8 meets round-off in its corrector; GSTIFF at 1e-8 on the stiff bushing chain.
-OPENMSS_REFERENCE = {"bushing": ("GSTIFF", 1e-8), "chain-stiff4": ("GSTIFF", 1e-9),
+OPENMSS_REFERENCE = {"bushing": ("GSTIFF", 1e-8), "bushing-stiff": ("GSTIFF", 1e-8),
+                     "chain-stiff4": ("GSTIFF", 1e-9),
                      "chain-stiff8": ("GSTIFF", 1e-9)}
 OPENMSS_REFERENCE_DEFAULT = ("MERSON", 1e-8)
 SIMBODY_REFERENCE = 1e-10
@@ -182,7 +184,7 @@ def main():
     p.add_argument("--simbody")
     p.add_argument("--sizes", default="10,100,1000")
     p.add_argument("--models", default="chain-planar,chain-spatial,chain-stiff4,chain-stiff8,"
-                   "fourbar,bushing")
+                   "fourbar,bushing,bushing-stiff")
     p.add_argument("--timeout", type=float, default=900.0, help="seconds per OpenMSS run")
     p.add_argument("--peer-timeout", type=float, default=300.0, help="seconds per peer run")
     p.add_argument("--peer-max-n", type=int, default=1000000,
@@ -462,6 +464,8 @@ Sizes: N = {', '.join(str(s) for s in sizes)}. Generated {time.strftime('%Y-%m-%
 - **bushing**: N free 1 kg blocks each held to the previous one by a BUSHING and a
   translational SPRINGDAMPER (6N DOF, stiff), 1 s. OpenMSS and Simbody (the BUSHING law as a
   custom force: see "The bushing chain against Simbody"); not MuJoCo (no bushing element).
+- **bushing-stiff**: the same chain with 100x the stiffnesses (1e6 N/m, 1e4 N m/rad) and a
+  damping ratio of about 0.1: modes near 1000 rad/s, the stiff case of the bushing chain.
 - **Settings**: OpenMSS {openmss_settings} (MERSON not on the stiff models);
   Simbody RungeKuttaMersonIntegrator at accuracy {simbody}
   (1e-6 is the issue's figure), on the stiff chains also CPodesIntegrator (implicit BDF) at the

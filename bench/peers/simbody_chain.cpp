@@ -177,9 +177,9 @@ SimTK::MobilizedBody buildBushingChain(const ChainModel& model,
 int main(int argc, char** argv) {
   using namespace SimTK;
   if (argc != 5 && argc != 6) {
-    std::cerr
-        << "usage: simbody_chain chain-planar|chain-spatial|chain-stiff4|chain-stiff8|bushing N "
-           "END ACCURACY [RKMerson|CPodes]\n";
+    std::cerr << "usage: simbody_chain "
+                 "chain-planar|chain-spatial|chain-stiff4|chain-stiff8|bushing|bushing-stiff N "
+                 "END ACCURACY [RKMerson|CPodes]\n";
     return 64;
   }
   const std::string kind = argv[1];
@@ -189,7 +189,7 @@ int main(int argc, char** argv) {
     return 64;
   }
   if (kind != "chain-planar" && kind != "chain-spatial" && kind != "chain-stiff4" &&
-      kind != "chain-stiff8" && kind != "bushing") {
+      kind != "chain-stiff8" && kind != "bushing" && kind != "bushing-stiff") {
     std::cerr << "simbody_chain: " << kind << " is not built for Simbody (see the file header)\n";
     return 3;
   }
@@ -207,7 +207,7 @@ int main(int argc, char** argv) {
   // mobilizer frames turn its z axis onto the joint axis, so q = 0 is the initial configuration.
   MobilizedBody last;
   Vec3 tipStation;
-  if (kind == "bushing") {
+  if (kind == "bushing" || kind == "bushing-stiff") {
     last = buildBushingChain(model, matter, forces);
     const auto& tip = model.bodies[model.tipBody];
     tipStation = toSimTK(tip.distal) - toSimTK(tip.centerOfMass);
