@@ -433,7 +433,7 @@ void LocalNewtonMatrix::equationRows(const ConstraintEquation& eq, const Equatio
     if constexpr (std::is_same_v<S, Dual<double>>) {
       MultibodySystem::sideGradient(eq, frames, side, origin[i], axes[i], out);
     } else if (arms != nullptr && eq.kind == ConstraintEquation::Kind::Point) {
-      // MultibodySystem::analyticSideGradient's Point case, operation for operation, with the
+      // MultibodySystem::analyticSideGradient's Point case (pointSideGradient) with the
       // arm A^T (p - o) computed once per joint side and pass instead of once per equation
       // (the three Point equations of a joint share it; docs/performance.md, "The
       // element-local Newton matrix, cheaper").
@@ -441,12 +441,7 @@ void LocalNewtonMatrix::equationRows(const ConstraintEquation& eq, const Equatio
         arms[side] = axes[i].tmul(frames[side].p - origin[i]);
         *armMask |= 1 << side;
       }
-      const int c = eq.axisJ;
-      const double sign = side == 0 ? 1.0 : -1.0;
-      const V3<S> gpBody(sign * axes[i].c[0][c], sign * axes[i].c[1][c], sign * axes[i].c[2][c]);
-      for (int d = 0; d < 3; ++d) out[d] = S(d == c ? sign : 0.0);
-      const V3<S> torque = cross(arms[side], gpBody);
-      for (int d = 0; d < 3; ++d) out[3 + d] = torque[d];
+      MultibodySystem::pointSideGradient(eq, side, arms[side], axes[i], out);
     } else {
       MultibodySystem::analyticSideGradient(eq, frames, side, origin[i], axes[i], out);
     }

@@ -50,17 +50,12 @@ void MultibodySystem::serialConstraintRows(double t, const double* y, double* g)
       const M3<double>& axes = kin.axes[b];
       double d[6];
       if (eq.kind == K::Point) {
-        // analyticSideGradient's Point case, operation for operation, with the joint side's arm.
+        // analyticSideGradient's Point case with the joint side's arm.
         if ((armMask & (1 << side)) == 0) {
           arm[side] = axes.tmul(frames[side].p - origin);
           armMask |= 1 << side;
         }
-        const int c = eq.axisJ;
-        const double sign = side == 0 ? 1.0 : -1.0;
-        const V3<double> gpBody(sign * axes.c[0][c], sign * axes.c[1][c], sign * axes.c[2][c]);
-        for (int dir = 0; dir < 3; ++dir) d[dir] = dir == c ? sign : 0.0;
-        const V3<double> torque = cross(arm[side], gpBody);
-        for (int dir = 0; dir < 3; ++dir) d[3 + dir] = torque[dir];
+        pointSideGradient(eq, side, arm[side], axes, d);
       } else {
         analyticSideGradient(eq, frames, side, origin, axes, d);
       }
@@ -71,13 +66,7 @@ void MultibodySystem::serialConstraintRows(double t, const double* y, double* g)
       }
     }
     // constraintRow's value: ConstraintSet::geometry of these kinds is analyticGeometry.
-    double value = analyticGeometry(eq, frames);
-    if (eq.motion >= 0) {
-      const double target = motionJet(k, t).value;
-      value = value - target;
-      if (ConstraintSet::wrapsAngle(eq)) value = value - wrapDelta(value + target, target);
-    }
-    g[layout_.lambda(k)] = value;
+    g[layout_.lambda(k)] = rowValue(k, t, analyticGeometry(eq, frames));
   }
 }
 

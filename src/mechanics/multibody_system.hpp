@@ -166,6 +166,20 @@ class MultibodySystem {
   template <class T>
   static void analyticSideGradient(const ConstraintEquation& eq, const Frame<T>* frames, int side,
                                    const V3<T>& origin, const M3<T>& axes, T* out);
+  // Its Point case with the side's arm A^T (p - o) given: the three Point equations of a joint
+  // share the arm, so the residual's serial rows and the element-local Newton matrix form it
+  // once per joint side (docs/performance.md, "GSTIFF's cost per step, cheaper").
+  template <class T>
+  static void pointSideGradient(const ConstraintEquation& eq, int side, const V3<T>& arm,
+                                const M3<T>& axes, T* out) {
+    // g_p = +-e_axis: A^T g_p is +- row `axis` of A.
+    const int c = eq.axisJ;
+    const double sign = side == 0 ? 1.0 : -1.0;
+    const V3<T> gpBody(sign * axes.c[0][c], sign * axes.c[1][c], sign * axes.c[2][c]);
+    for (int d = 0; d < 3; ++d) out[d] = T(d == c ? sign : 0.0);
+    const V3<T> torque = cross(arm, gpBody);
+    for (int d = 0; d < 3; ++d) out[3 + d] = torque[d];
+  }
   // The same for every kind (the others through virtualDerivative); T = double or Dual<double>.
   template <class T>
   static void sideGradient(const ConstraintEquation& eq, const Frame<T>* frames, int side,
@@ -237,6 +251,18 @@ class MultibodySystem {
   // Equation k's row of G and its constraint forces -C^T lambda added into g (the serial loop).
   template <class T>
   void constraintRow(int k, double t, KinematicsScratch<T>& kin, const T* y, T* g) const;
+  // Equation k's row from its geometry value: less its MOTION's target at t, an angle wrapped
+  // to the target's turn (constraintRow and serialConstraintRows).
+  template <class T>
+  T rowValue(int k, double t, T value) const {
+    const ConstraintEquation& eq = constraints_.equations()[k];
+    if (eq.motion >= 0) {
+      const double target = motionJet(k, t).value;
+      value = value - target;
+      if (ConstraintSet::wrapsAngle(eq)) value = value - wrapDelta(valueOf(value) + target, target);
+    }
+    return value;
+  }
   // The reaction of equations selected by `take(eq)` on `marker`'s part.
   template <class Pick>
   void reactionOf(Pick take, int marker, const double* y, Eigen::Vector3d& force,
@@ -332,15 +358,9 @@ void MultibodySystem::analyticSideGradient(const ConstraintEquation& eq, const F
   const Frame<T>& f = frames[side];
   V3<T> torque;
   switch (eq.kind) {
-    case K::Point: {
-      // g_p = +-e_axis: A^T g_p is +- row `axis` of A.
-      const int c = eq.axisJ;
-      const double sign = side == 0 ? 1.0 : -1.0;
-      const V3<T> gpBody(sign * axes.c[0][c], sign * axes.c[1][c], sign * axes.c[2][c]);
-      for (int d = 0; d < 3; ++d) out[d] = T(d == c ? sign : 0.0);
-      torque = cross(axes.tmul(f.p - origin), gpBody);
-      break;
-    }
+    case K::Point:
+      pointSideGradient(eq, side, axes.tmul(f.p - origin), axes, out);
+      return;
     case K::Dot: {
       // g_a[axisI] of I = axis axisJ of J and the other way round; no g_p.
       const V3<T>& own = side == 0 ? f.a.c[eq.axisI] : f.a.c[eq.axisJ];
@@ -468,13 +488,7 @@ void MultibodySystem::constraintRow(int k, double t, KinematicsScratch<T>& kin, 
   Frame<T> frames[ConstraintEquation::kMaxMarkers];
   for (int s = 0; s < eq.markerCount(); ++s) frames[s] = cachedFrame(kin, eq.marker(s), y);
   addConstraintForce(eq, frames, kin, y, lambda, g);
-  T value = ConstraintSet::geometry(eq, frames);
-  if (eq.motion >= 0) {
-    const double target = motionJet(k, t).value;
-    value = value - target;
-    if (ConstraintSet::wrapsAngle(eq)) value = value - wrapDelta(valueOf(value) + target, target);
-  }
-  row = value;
+  row = rowValue(k, t, ConstraintSet::geometry(eq, frames));
 }
 
 }  // namespace openmss::mechanics

@@ -48,8 +48,17 @@ void combineAny(double* out, const double* const* src, const double* w, int m, E
     default:
       break;
   }
-  // m = 0 (the sum of no terms): zero, as setZero() leaves it.
-  for (Eigen::Index i = 0; i < n; ++i) out[i] = 0.0;
+  if (m <= 0) {  // the sum of no terms: zero, as setZero() leaves it
+    for (Eigen::Index i = 0; i < n; ++i) out[i] = 0.0;
+    return;
+  }
+  // More terms than the unrolled cases (KMAX is at most 6, so not reached today): the same
+  // operations in the same order, the terms counted at run time.
+  for (Eigen::Index i = 0; i < n; ++i) {
+    double v = kFromZero ? 0.0 + w[0] * src[0][i] : w[0] * src[0][i];
+    for (int j = 1; j < m; ++j) v += w[j] * src[j][i];
+    out[i] = v;
+  }
 }
 
 template <bool kRescale, CorrectorUpdate::Later kLater>

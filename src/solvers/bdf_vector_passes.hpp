@@ -11,11 +11,11 @@
 namespace openmss::solvers::bdf {
 
 // out = 0 + w[0] src[0] + w[1] src[1] + ... + w[m-1] src[m-1], added left to right: the bits
-// of out.setZero() followed by out += w[j] * src[j] for j = 0..m-1 (m <= 8). out may not be one
-// of the sources.
+// of out.setZero() followed by out += w[j] * src[j] for j = 0..m-1 (unrolled for m <= 8). out may
+// not be one of the sources.
 void combineFromZero(double* out, const double* const* src, const double* w, int m, Eigen::Index n);
 // out = w[0] src[0] + w[1] src[1] + ...: the bits of out = w[0] * src[0] followed by
-// out += w[j] * src[j] for j = 1..m-1 (1 <= m <= 8).
+// out += w[j] * src[j] for j = 1..m-1 (m >= 1; unrolled for m <= 8).
 void combine(double* out, const double* const* src, const double* w, int m, Eigen::Index n);
 
 // One corrector update after the linear solve: d = dy colScale (times cjFactor when rescale),

@@ -23,6 +23,7 @@
 #include "language/reader.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/part_per_element.hpp"
 #include "support/random_state.hpp"
 
 namespace openmss::mechanics {
@@ -120,26 +121,10 @@ std::string everyKindDataSet() {
       "MOTION/24, B3, VELOCITY, FUNCTION=COS(TIME)",
       "MOTION/25, Z, ACCELERATION, ICVEL=0.5, FUNCTION=COS(TIME)",
   };
-  std::ostringstream o;
-  o << "every kind\nPART/1, GROUND\nMARKER/10, PART=1\n"
-    << "MARKER/11, PART=1, QP=0.3,-0.2,0.5, REULER=0.4,0.7,-0.2\n";
-  for (size_t i = 0; i < elements.size(); ++i) {
-    const int part = static_cast<int>(i) + 2;
-    const double x = 0.1 * static_cast<double>(i);
-    o << "PART/" << part << ", MASS=2, CM=" << 100 * part << ", IP=1,2,3\n"
-      << "MARKER/" << 100 * part << ", PART=" << part << ", QP=" << x
-      << ",0.1,-0.3, REULER=0.3,0.2,0.1\n"
-      << "MARKER/" << 100 * part + 1 << ", PART=" << part << ", QP=" << x + 0.3
-      << ",-0.2,0.5, REULER=0.5,0.6,-0.1\n"
-      << "MARKER/" << 100 * part + 2 << ", PART=" << part << ", QP=" << x - 0.2
-      << ",0.4,0.1, REULER=-0.3,1.1,0.7\n";
-    const int jMarker = i % 2 == 0 ? 11 : 100 * (part - 1) + 2;
-    o << elements[i] << ", I=" << 100 * part + 1 << ", J=" << jMarker << "\n";
-  }
   // Motions on joints: a rotation on the revolute, a translation on the translational joint.
-  o << "MOTION/30, JOINT=1, FUNCTION=0.3*TIME**2\n"
-    << "MOTION/31, JOINT=5, FUNCTION=0.2*SIN(TIME)\nEND\n";
-  return o.str();
+  return test::partPerElementDataSet("every kind", elements,
+                                     "MOTION/30, JOINT=1, FUNCTION=0.3*TIME**2\n"
+                                     "MOTION/31, JOINT=5, FUNCTION=0.2*SIN(TIME)\n");
 }
 
 // COUPLER, GEAR and GCON (the data sets of coupling_test.cpp and general_constraint_test.cpp).

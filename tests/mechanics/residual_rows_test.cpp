@@ -11,7 +11,6 @@
 #include <bit>
 #include <cstdint>
 #include <random>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -19,6 +18,7 @@
 #include "language/reader.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/part_per_element.hpp"
 #include "support/random_state.hpp"
 
 namespace openmss::mechanics {
@@ -46,25 +46,9 @@ std::string mixedDataSet() {
       "JOINT/7, TRANSLATIONAL",  "JPRIM/8, INLINE",      "JPRIM/9, PERPENDICULAR",
       "JOINT/10, TRANSLATIONAL", "JOINT/11, CONVEL",     "JOINT/12, REVOLUTE",
   };
-  std::ostringstream o;
-  o << "mixed rows\nPART/1, GROUND\nMARKER/10, PART=1\n"
-    << "MARKER/11, PART=1, QP=0.3,-0.2,0.5, REULER=0.4,0.7,-0.2\n";
-  for (size_t i = 0; i < elements.size(); ++i) {
-    const int part = static_cast<int>(i) + 2;
-    const double x = 0.1 * static_cast<double>(i);
-    o << "PART/" << part << ", MASS=2, CM=" << 100 * part << ", IP=1,2,3\n"
-      << "MARKER/" << 100 * part << ", PART=" << part << ", QP=" << x
-      << ",0.1,-0.3, REULER=0.3,0.2,0.1\n"
-      << "MARKER/" << 100 * part + 1 << ", PART=" << part << ", QP=" << x + 0.3
-      << ",-0.2,0.5, REULER=0.5,0.6,-0.1\n"
-      << "MARKER/" << 100 * part + 2 << ", PART=" << part << ", QP=" << x - 0.2
-      << ",0.4,0.1, REULER=-0.3,1.1,0.7\n";
-    const int jMarker = i % 2 == 0 ? 11 : 100 * (part - 1) + 2;
-    o << elements[i] << ", I=" << 100 * part + 1 << ", J=" << jMarker << "\n";
-  }
-  o << "MOTION/30, JOINT=4, FUNCTION=0.2*SIN(TIME)\n"
-    << "COUPLER/31, JOINTS=7,10, TYPE=T,T, SCALES=1,-0.5\nEND\n";
-  return o.str();
+  return test::partPerElementDataSet("mixed rows", elements,
+                                     "MOTION/30, JOINT=4, FUNCTION=0.2*SIN(TIME)\n"
+                                     "COUPLER/31, JOINTS=7,10, TYPE=T,T, SCALES=1,-0.5\n");
 }
 
 TEST(ResidualRows, DoubleRowsAreTheGenericLoopsBitForBit) {
