@@ -2,9 +2,12 @@
 // step, on IFToMM A02 (docs/validation.md, "IFToMM A02"; docs/integrators.md, "Local error audit
 // on A02"). A measuring tool, not a test: nothing here is asserted.
 //
-// Usage: openmss-a02-local-error N END METHOD ERROR [STEPS_CSV]
-//   METHOD: GSTIFF, WSTIFF, SI2_GSTIFF or SI2_WSTIFF. ERROR as on the INTEGRATOR statement.
-//   400 output steps per 20 s (the benchmark's), so HMAX and HINIT are those of a02_table.py.
+// Usage: openmss-a02-local-error N END METHOD ERROR [STEPS_CSV [HMAX]]
+//   METHOD: GSTIFF, WSTIFF, SI2_GSTIFF, SI2_WSTIFF or MERSON. ERROR as on the INTEGRATOR
+//   statement. 400 output steps per 20 s (the benchmark's), so HMAX and HINIT are those of
+//   a02_table.py unless HMAX is given. MERSON's estimate column is its own error norm (its
+//   ERROR weights), not the BDF's, so its true / estimated ratios compare unlike things; its
+//   steps, energy errors and the fan are comparable.
 //
 // The integrator is the one `openmss run` builds (analysis/integrator_factory.hpp) on the data
 // set `openmss-generate fourbar N`, stepped to the same output times. After every accepted step
@@ -242,7 +245,9 @@ void writeCsv(const char* path, const std::vector<StepRecord>& steps) {
 
 int main(int argc, char** argv) {
   if (argc < 5) {
-    std::fprintf(stderr, "usage: %s N END GSTIFF|WSTIFF|SI2_GSTIFF|SI2_WSTIFF ERROR [STEPS_CSV]\n",
+    std::fprintf(stderr,
+                 "usage: %s N END GSTIFF|WSTIFF|SI2_GSTIFF|SI2_WSTIFF|MERSON ERROR "
+                 "[STEPS_CSV [HMAX]]\n",
                  argv[0]);
     return 2;
   }
@@ -273,8 +278,10 @@ int main(int argc, char** argv) {
   model::IntegratorSettings settings;
   settings.type = method.find("WSTIFF") != std::string::npos ? model::IntegratorType::Wstiff
                                                              : model::IntegratorType::Gstiff;
+  if (method == "MERSON") settings.type = model::IntegratorType::Merson;
   if (method.rfind("SI2", 0) == 0) settings.formulation = model::IntegratorFormulation::Si2;
   settings.error = error;
+  if (argc > 6) settings.hmax = std::atof(argv[6]);
   const double outStep = end / static_cast<double>(outputs);
   const analysis::IntegratorPlan plan = analysis::resolveIntegrator(settings, outStep);
   analysis::MultibodyDae dae(system);
