@@ -577,6 +577,8 @@ than N^1.1 from N = 1000 to 10,000 (measured by `bench/scaling.py`, docs/perform
     splice_generated(args.markdown, text)
 
 
+# The plot: one panel per model, each engine's settings as lines, so that a panel's legend stays
+# readable (with every model in one panel it ran off the figure).
 def write_plot(path, rows):
     try:
         import matplotlib
@@ -585,24 +587,60 @@ def write_plot(path, rows):
     except ImportError:
         print("matplotlib missing: no plot", file=sys.stderr)
         return
-    fig, ax = plt.subplots(figsize=(7, 5))
-    series = {}
-    for r in rows:
-        if "steps" in r:
-            key = f"{r['engine']} {r['setting']} ({r['model']})"
-            series.setdefault(key, []).append((r["n"], 1000.0 * r["cpu"] / max(r["steps"], 1)))
-    for key, pts in sorted(series.items()):
-        pts.sort()
-        if len(pts) > 1:
-            ax.loglog([p[0] for p in pts], [p[1] for p in pts], marker="o", label=key)
-    ax.set_xlabel("N (links)")
-    ax.set_ylabel("CPU time per step (ms)")
-    ax.set_title("Time per step against model size")
-    ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=6)
+    models = list(dict.fromkeys(r["model"] for r in rows if "steps" in r))
+    if not models:
+        return
+    cols = min(3, len(models))
+    nrows = (len(models) + cols - 1) // cols
+    fig, axes = plt.subplots(nrows, cols, figsize=(5.2 * cols, 4.2 * nrows), squeeze=False)
+    for ax, kind in zip(axes.flat, models):
+        series = {}
+        for r in rows:
+            if "steps" in r and r["model"] == kind:
+                key = f"{r['engine']} {r['setting']}"
+                series.setdefault(key, []).append((r["n"],
+                                                   1000.0 * r["cpu"] / max(r["steps"], 1)))
+        for key, pts in sorted(series.items()):
+            pts.sort()
+            if len(pts) > 1:
+                style = "-" if key.startswith("OpenMSS") else "--"
+                ax.loglog([p[0] for p in pts], [p[1] for p in pts], style, marker="o",
+                          markersize=3, label=key)
+        ax.set_title(kind, fontsize=9)
+        ax.set_xlabel("N", fontsize=8)
+        ax.set_ylabel("CPU ms per step", fontsize=8)
+        ax.grid(True, which="both", alpha=0.3)
+        ax.tick_params(labelsize=7)
+        if ax.lines:
+            ax.legend(fontsize=5, ncol=2)
+    for ax in list(axes.flat)[len(models):]:
+        ax.axis("off")
+    fig.suptitle("Time per step against model size (OpenMSS solid, peers dashed)", fontsize=10)
     fig.tight_layout()
-    fig.savefig(path, dpi=120)
+    fig.savefig(path, dpi=110)
+
+
+def rows_from_markdown(path):
+    """The measured rows of a page's generated Results table (the columns render() writes), to
+    draw the plot again without re-running (--replot)."""
+    rows = []
+    with open(path, encoding="utf-8") as f:
+        for line in f:
+            cells = [c.strip() for c in line.strip().strip("|").split("|")]
+            if len(cells) != 11 or not cells[1].isdigit():
+                continue
+            try:
+                cpu, steps = float(cells[5]), int(cells[6])
+            except ValueError:
+                continue  # a skipped or failed run
+            rows.append({"model": cells[0], "n": int(cells[1]), "engine": cells[2],
+                         "setting": cells[3], "cpu": cpu, "steps": steps})
+    return rows
 
 
 if __name__ == "__main__":
-    main()
+    if len(sys.argv) == 4 and sys.argv[1] == "--replot":
+        # python3 bench/run_bench.py --replot docs/performance.md docs/performance-scaling.png
+        write_plot(sys.argv[3], rows_from_markdown(sys.argv[2]))
+    else:
+        main()

@@ -45,7 +45,7 @@ def main():
         assert "## Reproducing" in text
         checks += 1
     checks += check_ratios()
-    assert checks == 8
+    assert checks == 9
     print(f"run_bench splice and ratios: {checks} checks passed")
 
 
@@ -91,6 +91,20 @@ def check_ratios():
     # At N = 100 GSTIFF's only ratio is a * one; HHT's plain ratio; at 1000 the bound.
     assert lines[3] == "| m | 100 | 0.50* at 1e-6 (1e-09 m) | 0.50 at 1e-3 (1e-03 m) |", table
     assert lines[4] == "| m | 1000 | <0.05 at 1e-3 (1e-04 m) | – |", table
+    checks += 1
+    # --replot reads the Results rows back; skipped rows and other tables are left out.
+    with tempfile.TemporaryDirectory() as d:
+        page = os.path.join(d, "p.md")
+        with open(page, "w") as f:
+            f.write("| model | N | engine | setting | wall s | CPU s | steps | CPU ms/step | "
+                    "tip error m | peak RSS MB | ours / best peer (CPU) |\n"
+                    "| m | 100 | OpenMSS | GSTIFF ERROR=1e-06 | 0.29 | 0.279 | 1519 | 0.182 | "
+                    "8.6e-08 | 22 | 0.90 vs Simbody RK-Merson 1e-05 |\n"
+                    "| m | 1000 | MuJoCo | RK4 dt=0.01 | skipped, > 90 s (timeout) | | | | | | |\n"
+                    "| m | 100 | 0.90 at 1e-06 (9e-08 m) | – |\n")
+        back = run_bench.rows_from_markdown(page)
+        assert back == [{"model": "m", "n": 100, "engine": "OpenMSS",
+                         "setting": "GSTIFF ERROR=1e-06", "cpu": 0.279, "steps": 1519}], back
     return checks + 1
 
 
