@@ -41,14 +41,18 @@ struct Chain {
   double cj = 1e3;
 };
 
-Chain& chain(int links) {
-  static std::map<int, std::unique_ptr<Chain>> chains;
-  auto& c = chains[links];
+// bushing: the chain of free blocks joined by BUSHING and SPRINGDAMPER (bench::bushingChainAdm)
+// instead of the revolute chain.
+Chain& chain(int links, bool bushing = false) {
+  static std::map<std::pair<int, bool>, std::unique_ptr<Chain>> chains;
+  auto& c = chains[{links, bushing}];
   if (c) return *c;
   c = std::make_unique<Chain>();
   language::Dataset ds;
   Diagnostics d;
-  language::readDatasetText(bench::planarPendulumChainAdm(links), "chain.adm", ds, d);
+  language::readDatasetText(
+      bushing ? bench::bushingChainAdm(links) : bench::planarPendulumChainAdm(links), "chain.adm",
+      ds, d);
   model::buildModel(ds, c->model, d);
   c->system = std::make_unique<mechanics::MultibodySystem>(c->model);
   c->y = c->system->initialState();
@@ -112,6 +116,29 @@ void BM_ColouredNewtonMatrix(benchmark::State& state) {
   count(state, c);
 }
 BENCHMARK(BM_ColouredNewtonMatrix)->Arg(10)->Arg(100)->Arg(1000)->Unit(benchmark::kMicrosecond);
+
+// The force elements' entries on the bushing chain (N blocks, a BUSHING and a translational
+// SPRINGDAMPER between neighbours, no constraints), the whole sparse Newton matrix without the
+// run-time guard: range(1) = 0 element by element (mechanics/local_newton_forces.cpp), 1 the
+// force elements on the element-local matrix's coloured passes (the path before), 2 the whole
+// residual coloured.
+void BM_ForceElementNewtonMatrix(benchmark::State& state) {
+  Chain& c = chain(static_cast<int>(state.range(0)), true);
+  const mechanics::JacobianPattern& pattern = c.dae->jacobianPattern();
+  Eigen::SparseMatrix<double> jac = pattern.matrix();
+  mechanics::SparseJacobianWork work;
+  work.forceElementsLocal = state.range(1) == 0;
+  work.elementLocal = state.range(1) != 2;
+  for (auto _ : state) {
+    c.system->newtonMatrixSparse(0.0, c.y, c.yp, c.cj, pattern, jac, work);
+    benchmark::DoNotOptimize(jac.valuePtr());
+  }
+  count(state, c);
+  state.counters["colours"] = pattern.colours();
+}
+BENCHMARK(BM_ForceElementNewtonMatrix)
+    ->ArgsProduct({{100, 1000}, {0, 1, 2}})
+    ->Unit(benchmark::kMicrosecond);
 
 void BM_DenseNewtonMatrix(benchmark::State& state) {
   Chain& c = chain(static_cast<int>(state.range(0)));

@@ -104,6 +104,13 @@ bool ForceElements::netForceTakes(const ConstraintEquation& eq, int marker, int 
   return false;
 }
 
+bool ForceElements::isStateLocal(ForceElementRef e) const {
+  // A FIELD with FUNCTION=USER calls user code (FIESUB); every other kind reads expressions,
+  // user code, the constraints or run state (friction anchors, contact).
+  if (e.kind == ForceElementKind::SpringDamper) return true;
+  return e.kind == ForceElementKind::LinearField && !model_->linearFields[e.index].user;
+}
+
 bool ForceElements::netForceActs(ForceElementRef e, int marker, int other, bool* atJ) const {
   if (e.kind == ForceElementKind::MultiPoint) {
     // On J (between J and any of its I markers) or on an I marker (between it and J).

@@ -71,9 +71,29 @@ class ForceElements {
   // Subtracts every element's generalised force from the Newton-Euler rows of g.
   // `derivativesOnly` (the caller reads the derivative parts of g only): the CONTACT elements
   // whose two parts' states carry no derivative are left out; their derivatives are exactly zero.
+  // `skip` (one flag per element of elements(), or null): elements left out, whose entries the
+  // caller fills otherwise (the element-local Newton matrix, local_newton_forces.cpp).
   template <class T>
   void addToResidual(double t, const T* y, T* g, const DynamicReads<T>* reads = nullptr,
-                     bool derivativesOnly = false) const;
+                     bool derivativesOnly = false, const char* skip = nullptr) const;
+
+  // Whether element e's loads are a pure function of its two markers' states and its own
+  // constant data (SPRINGDAMPER; BUSHING, FIELD, BEAM without FUNCTION=USER): no expression,
+  // user code or run state. Such an element's Newton-matrix entries can be formed by one local
+  // forward-AD pass over its two bodies' states (docs/theory.md, "Element-local Newton matrix").
+  bool isStateLocal(ForceElementRef e) const;
+  // The loads of such an element from its I and J marker states (those of loads()).
+  template <class T>
+  ElementLoads<T> stateLocalLoads(ForceElementRef e, const MarkerState<T>& mi,
+                                  const MarkerState<T>& mj) const {
+    if (e.kind == ForceElementKind::SpringDamper) return springDamperLoads(e.index, mi, mj);
+    return linearFieldLoads(e.index, 0.0, mi, mj);
+  }
+  // Subtracts a force through `point` and a torque (ground axes) from the force rows gv and
+  // moment rows gw of the body at `pose`: what the residual does for each load it applies.
+  template <class T>
+  static void applyLoad(const BodyPose<T>& pose, const V3<T>& point, const V3<T>& force,
+                        const V3<T>& torque, bool hasForce, bool hasTorque, T* gv, T* gw);
 
   // Force and torque of element e on the part of its I marker (atJ false) or of its J / JFLOAT
   // marker (atJ true), in ground; the torque is about that marker's origin (a JFLOAT marker
@@ -145,9 +165,23 @@ class ForceElements {
   template <class T>
   ElementLoads<T> sforceLoads(int k, double t, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
-  ElementLoads<T> springDamperLoads(int k, const T* y) const;
+  ElementLoads<T> springDamperLoads(int k, const T* y) const {
+    const model::SpringDamper& s = model_->springDampers[k];
+    return springDamperLoads(k, markerState(*model_, layout_, s.iMarker, y),
+                             markerState(*model_, layout_, s.jMarker, y));
+  }
   template <class T>
-  ElementLoads<T> linearFieldLoads(int k, double t, const T* y) const;
+  ElementLoads<T> springDamperLoads(int k, const MarkerState<T>& mi,
+                                    const MarkerState<T>& mj) const;
+  template <class T>
+  ElementLoads<T> linearFieldLoads(int k, double t, const T* y) const {
+    const model::LinearField& f = model_->linearFields[k];
+    return linearFieldLoads(k, t, markerState(*model_, layout_, f.iMarker, y),
+                            markerState(*model_, layout_, f.jMarker, y));
+  }
+  template <class T>
+  ElementLoads<T> linearFieldLoads(int k, double t, const MarkerState<T>& mi,
+                                   const MarkerState<T>& mj) const;
   template <class T>
   ElementLoads<T> vectorForceLoads(int k, double t, const T* y, const DynamicReads<T>* reads) const;
   template <class T>
@@ -265,10 +299,9 @@ ElementLoads<T> ForceElements::sforceLoads(int k, double t, const T* y,
 }
 
 template <class T>
-ElementLoads<T> ForceElements::springDamperLoads(int k, const T* y) const {
+ElementLoads<T> ForceElements::springDamperLoads(int k, const MarkerState<T>& mi,
+                                                 const MarkerState<T>& mj) const {
   const model::SpringDamper& s = model_->springDampers[k];
-  const MarkerState<T> mi = markerState(*model_, layout_, s.iMarker, y);
-  const MarkerState<T> mj = markerState(*model_, layout_, s.jMarker, y);
   ElementLoads<T> l;
   l.reactionMarker = s.jMarker;
   l.reactionPoint = mj.p;
@@ -317,15 +350,17 @@ void userFieldLoad(const user::FieldRoutine& routine, double t, const T q[6], co
 }
 
 template <class T>
-ElementLoads<T> ForceElements::linearFieldLoads(int k, double t, const T* y) const {
+ElementLoads<T> ForceElements::linearFieldLoads(int k, double t, const MarkerState<T>& mi,
+                                                const MarkerState<T>& mj) const {
   const model::LinearField& f = model_->linearFields[k];
-  const MarkerState<T> mi = markerState(*model_, layout_, f.iMarker, y);
-  const MarkerState<T> mj = markerState(*model_, layout_, f.jMarker, y);
   T q[6], qdot[6];
   fieldDisplacement(mi, mj, q, qdot);
   T load[6];
+  // Multi-direction duals (the element-local Newton matrix) never reach a USER field
+  // (isStateLocal): userFieldLoad is instantiated for double and Dual only.
+  constexpr bool userCapable = std::is_same_v<T, double> || requires(T x) { x.d = x.d * 1.0; };
   if (f.user) {
-    userFieldLoad(*f.user, t, q, qdot, load);
+    if constexpr (userCapable) userFieldLoad(*f.user, t, q, qdot, load);
   } else {
     for (int r = 0; r < 6; ++r) {
       T sum = T(f.preload(r));
@@ -497,8 +532,13 @@ template <class T>
 void ForceElements::applyAtPose(int body, const BodyPose<T>& pose, const V3<T>& point,
                                 const V3<T>& force, const V3<T>& torque, bool hasForce,
                                 bool hasTorque, T* g) const {
-  T* gv = g + layout_.body(body) + StateLayout::kV;
-  T* gw = g + layout_.body(body) + StateLayout::kW;
+  applyLoad(pose, point, force, torque, hasForce, hasTorque,
+            g + layout_.body(body) + StateLayout::kV, g + layout_.body(body) + StateLayout::kW);
+}
+
+template <class T>
+void ForceElements::applyLoad(const BodyPose<T>& pose, const V3<T>& point, const V3<T>& force,
+                              const V3<T>& torque, bool hasForce, bool hasTorque, T* gv, T* gw) {
   // Force in ground; torque about the CM in body axes (the rows' convention, theory.md §4).
   if (hasForce) {
     const V3<T> nb = pose.a.tmul(cross(point - pose.r, force));
@@ -515,8 +555,10 @@ void ForceElements::applyAtPose(int body, const BodyPose<T>& pose, const V3<T>& 
 
 template <class T>
 void ForceElements::addToResidual(double t, const T* y, T* g, const DynamicReads<T>* reads,
-                                  bool derivativesOnly) const {
-  for (const ForceElementRef& e : elements_) {
+                                  bool derivativesOnly, const char* skip) const {
+  for (size_t k = 0; k < elements_.size(); ++k) {
+    const ForceElementRef& e = elements_[k];
+    if (skip != nullptr && skip[k] != 0) continue;
     if (e.kind == ForceElementKind::MultiPoint) {
       std::vector<V3<T>> f, tq;
       V3<T> fj, tj;

@@ -22,9 +22,16 @@ class PatternBuilder {
   // forceAndUserOnly: the rows of the force elements and user equations alone, unclaimed rows
   // left empty (forceAndUserPattern).
   PatternBuilder(const MultibodySystem& s, const std::vector<char>& contacts,
-                 bool forceAndUserOnly = false)
-      : forceAndUserOnly_(forceAndUserOnly), contacts_(contacts), s_(s), m_(s.model()), l_(s.layout()), rows_(static_cast<size_t>(l_.size())),
-        claimed_(static_cast<size_t>(l_.size()), false), dense_(static_cast<size_t>(l_.size()), false) {}
+                 bool forceAndUserOnly = false, const std::vector<char>* skip = nullptr)
+      : forceAndUserOnly_(forceAndUserOnly),
+        skip_(skip),
+        contacts_(contacts),
+        s_(s),
+        m_(s.model()),
+        l_(s.layout()),
+        rows_(static_cast<size_t>(l_.size())),
+        claimed_(static_cast<size_t>(l_.size()), false),
+        dense_(static_cast<size_t>(l_.size()), false) {}
 
   std::vector<std::vector<int>> build() {
     if (forceAndUserOnly_) {
@@ -295,7 +302,9 @@ class PatternBuilder {
   // the loaded body's pose too.
   void forceElements() {
     const ForceElements& fe = s_.forceElements();
-    for (const ForceElementRef& e : fe.elements()) {
+    for (size_t k = 0; k < fe.elements().size(); ++k) {
+      const ForceElementRef& e = fe.elements()[k];
+      if (skip_ != nullptr && !skip_->empty() && (*skip_)[k] != 0) continue;  // filled elsewhere
       // A CONTACT left out of a near-pair pattern (its bodies apart; theory §6c).
       if (e.kind == ForceElementKind::Contact && !contacts_.empty() && !contacts_[e.index])
         continue;
@@ -379,6 +388,7 @@ class PatternBuilder {
   }
 
   bool forceAndUserOnly_;
+  const std::vector<char>* skip_;      // force elements left out (forceAndUserPattern)
   const std::vector<char>& contacts_;  // empty: every CONTACT
   mutable int depth_ = 0;  // nesting of addElementReads (read-backs of read-backs)
   const MultibodySystem& s_;
@@ -433,8 +443,9 @@ JacobianPattern newtonMatrixPattern(const MultibodySystem& system,
 }
 
 JacobianPattern forceAndUserPattern(const MultibodySystem& system,
-                                    const std::vector<char>& contacts) {
-  PatternBuilder builder(system, contacts, true);
+                                    const std::vector<char>& contacts,
+                                    const std::vector<char>& skip) {
+  PatternBuilder builder(system, contacts, true, &skip);
   JacobianPattern p = patternFromRows(system.layout().size(), builder.build());
   p.contacts = contacts;
   return p;

@@ -59,8 +59,11 @@ JacobianPattern newtonMatrixPattern(const MultibodySystem& system,
 // The part of it that the force elements and the user equations make (rows they write,
 // columns those rows read; other rows empty), coloured: what the element-local Newton matrix
 // still fills by compressed AD.
+// `skip` (one flag per force element, ForceElements::elements(); empty: none): elements left
+// out, whose entries the element-local Newton matrix forms element by element.
 JacobianPattern forceAndUserPattern(const MultibodySystem& system,
-                                    const std::vector<char>& contacts = {});
+                                    const std::vector<char>& contacts = {},
+                                    const std::vector<char>& skip = {});
 
 // Greedy distance-2 colouring of the columns in ascending order (deterministic): two columns
 // that share a row get different colours.
@@ -78,6 +81,9 @@ struct SparseJacobianWork {
   // elementLocal = false forces the compressed colouring of the whole residual (tests, bench).
   std::shared_ptr<LocalNewtonMatrix> local;
   bool elementLocal = true;
+  // forceElementsLocal = false puts every force element on the element-local matrix's coloured
+  // passes (LocalNewtonMatrix's localForces; tests, bench).
+  bool forceElementsLocal = true;
 };
 
 }  // namespace openmss::mechanics

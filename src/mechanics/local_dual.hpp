@@ -3,6 +3,8 @@
 // local_newton_matrix.hpp): one evaluation of an equation yields its derivatives with respect
 // to all the positions it reads, the value being computed once instead of N times.
 
+#include <cmath>
+
 #include "common/vec3.hpp"
 
 namespace openmss::mechanics {
@@ -36,6 +38,36 @@ struct DualVec {
   friend DualVec operator*(double a, const DualVec& b) {
     DualVec r(a * b.v);
     for (int k = 0; k < N; ++k) r.d[k] = a * b.d[k];
+    return r;
+  }
+  friend DualVec operator*(const DualVec& b, double a) { return a * b; }
+  // Division as Dual's (common/dual.hpp), operation for operation, so that each direction
+  // carries the same bits as a Dual<double> seeded along it.
+  friend DualVec operator/(const DualVec& a, const DualVec& b) {
+    const double inv = 1.0 / b.v;
+    DualVec r(a.v * inv);
+    for (int k = 0; k < N; ++k) r.d[k] = (a.d[k] - a.v * inv * b.d[k]) * inv;
+    return r;
+  }
+  friend DualVec operator/(const DualVec& a, double b) {
+    DualVec r(a.v / b);
+    for (int k = 0; k < N; ++k) r.d[k] = a.d[k] / b;
+    return r;
+  }
+  // The functions the force elements' laws use (ForceElements::stateLocalLoads), as Dual's;
+  // hidden friends (found by argument-dependent lookup only), so that they do not hide the
+  // double versions from the rest of the namespace.
+  friend double valueOf(const DualVec& x) { return x.v; }
+  friend DualVec sqrtOf(const DualVec& a) {
+    const double s = std::sqrt(a.v);
+    DualVec r(s);
+    for (int k = 0; k < N; ++k) r.d[k] = a.d[k] / (2.0 * s);
+    return r;
+  }
+  friend DualVec atan2Of(const DualVec& y, const DualVec& x) {
+    const double r2 = x.v * x.v + y.v * y.v;
+    DualVec r(std::atan2(y.v, x.v));
+    for (int k = 0; k < N; ++k) r.d[k] = (x.v * y.d[k] - y.v * x.d[k]) / r2;
     return r;
   }
 };

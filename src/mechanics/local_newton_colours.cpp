@@ -24,9 +24,15 @@ bool LocalNewtonMatrix::coloursMayRunInParallel() const {
   // (shared scratch, DELAY histories), user subroutines or run-state anchors: serial.
   const StateLayout& l = system_.layout();
   if (l.userDifferential != 0 || l.userAlgebraic != 0) return false;
+  // Only the elements the colour passes evaluate: the state-local ones are formed element by
+  // element (local_newton_forces.cpp), so with them planned there no element qualifies here.
   const auto& elements = system_.forceElements().elements();
-  if (elements.size() < kParallelElements) return false;
-  for (const ForceElementRef& e : elements) {
+  size_t coloured = 0;
+  for (char skip : forceSkip_) coloured += skip == 0 ? 1 : 0;
+  if (coloured < kParallelElements) return false;
+  for (size_t k = 0; k < elements.size(); ++k) {
+    const ForceElementRef& e = elements[k];
+    if (forceSkip_[k] != 0) continue;
     if (e.kind != ForceElementKind::SpringDamper && e.kind != ForceElementKind::LinearField)
       return false;
     // A FIELD with FUNCTION=USER calls user code (FIESUB): serial too.
@@ -69,7 +75,7 @@ void LocalNewtonMatrix::forceAndUserColours(double t, const Eigen::VectorXd& y,
       for (int r : forceAndUserRows_) dg[r] = D(0.0, 0.0);
       // Only dg's derivatives are read below: the CONTACTs whose parts this colour does not
       // seed are left out (their derivatives are exactly zero; theory §6c, "Shared kinematics").
-      system_.forceAndUserResidual(t, dy.data(), dyp.data(), dg.data(), true);
+      system_.forceAndUserResidual(t, dy.data(), dyp.data(), dg.data(), true, forceSkip_.data());
       for (int k = begin; k < end; ++k) {
         const int c = p.colourColumns[k];
         for (int e = p.columnStart[c]; e < p.columnStart[c + 1]; ++e)

@@ -55,8 +55,8 @@ void forEachBodyEntry(Visit visit) {
 
 }  // namespace
 
-LocalNewtonMatrix::LocalNewtonMatrix(const MultibodySystem& system,
-                                     const JacobianPattern& pattern)
+LocalNewtonMatrix::LocalNewtonMatrix(const MultibodySystem& system, const JacobianPattern& pattern,
+                                     bool localForces)
     : system_(system), patternStamp_(pattern.stamp), nonZeros_(pattern.nonZeros()) {
   // Dense rows (a repair, or a dependency the pattern rules could not resolve) mean some
   // contribution is not known element by element: colour the whole residual instead.
@@ -66,6 +66,8 @@ LocalNewtonMatrix::LocalNewtonMatrix(const MultibodySystem& system,
   usable_ = pattern.denseRows == 0 && (pattern.size == l.size() || stabilised_);
   if (usable_) planBodies(pattern);
   if (usable_) planEquations(pattern);
+  forceSkip_.assign(system.forceElements().elements().size(), 0);
+  if (usable_ && localForces) planForceElements(pattern);
   if (usable_) planForceAndUser(pattern);
   if (usable_) parallelColours_ = coloursMayRunInParallel();
 }
@@ -214,7 +216,7 @@ void LocalNewtonMatrix::stabilisationChunk(const EquationPlan& plan, int slot, c
 }
 
 void LocalNewtonMatrix::planForceAndUser(const JacobianPattern& p) {
-  forceAndUser_ = forceAndUserPattern(system_, p.contacts);
+  forceAndUser_ = forceAndUserPattern(system_, p.contacts, forceSkip_);
   if (forceAndUser_.denseRows > 0) {
     usable_ = false;
     return;
@@ -485,8 +487,9 @@ void LocalNewtonMatrix::assemble(double t, const Eigen::VectorXd& y, const Eigen
       for (int base = 0; base < directions; ++base)
         equationChunk<Dual<double>>(eq, plan, base, lambda, values);
   }
-  // Force elements and user equations: compressed forward AD of their rows alone
-  // (local_newton_colours.cpp: the colours on several threads when the elements allow it).
+  // The state-local force elements one by one (local_newton_forces.cpp); the others and the
+  // user equations by compressed forward AD of their rows alone (local_newton_colours.cpp).
+  forceElementEntries(y, values);
   forceAndUserColours(t, y, yp, cj, values, work);
 }
 

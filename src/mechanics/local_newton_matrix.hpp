@@ -8,8 +8,12 @@
 //    positions (r, e) of those bodies only (all 7 per body in one multi-direction dual for the
 //    kinds with analytic gradients; one direction at a time for the others); the multiplier's
 //    column is the gradient itself;
-//  * force elements and user equations: compressed forward AD of their rows alone, on their own
-//    coloured pattern (forceAndUserPattern).
+//  * force elements whose loads read only the state and their own data (SPRINGDAMPER; BUSHING,
+//    FIELD, BEAM without USER: ForceElements::isStateLocal): one local forward-AD pass per
+//    element over the 13 state entries (r, e, v, w) of each of its bodies
+//    (local_newton_forces.cpp);
+//  * the other force elements and user equations: compressed forward AD of their rows alone, on
+//    their own coloured pattern (forceAndUserPattern, those elements only).
 // Every entry lands in the values of the full pattern through indices found once, when the plan
 // is made. A pattern this cannot serve (dense rows, after a repair or for a dependency the
 // pattern does not resolve) makes usable() false: the caller then colours the whole residual.
@@ -35,7 +39,10 @@ class MultibodySystem;
 
 class LocalNewtonMatrix {
  public:
-  LocalNewtonMatrix(const MultibodySystem& system, const JacobianPattern& pattern);
+  // localForces false: every force element on the coloured passes (the path before
+  // local_newton_forces.cpp; tests and bench/jacobian_bench compare the two).
+  LocalNewtonMatrix(const MultibodySystem& system, const JacobianPattern& pattern,
+                    bool localForces = true);
 
   // Directions per multi-direction pass: the positions (r, e) of one body. One pass per body
   // rather than one over two bodies: the frames of the other bodies are then constants, and a
@@ -47,6 +54,8 @@ class LocalNewtonMatrix {
   // Planned with the SI2 rows and columns (a pattern of size + constraintEquations).
   bool stabilised() const { return stabilised_; }
   std::uint64_t patternStamp() const { return patternStamp_; }
+  // How many force elements are formed element by element (local_newton_forces.cpp).
+  int stateLocalForceElements() const { return static_cast<int>(forcePlans_.size()); }
   // Overwrites values (the pattern's nonzeros, column-major) with the Newton matrix; work's dual
   // vectors serve the compressed passes of the force elements and user equations.
   void assemble(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
@@ -66,6 +75,13 @@ class LocalNewtonMatrix {
   void planBodies(const JacobianPattern& pattern);
   void planEquations(const JacobianPattern& pattern);
   void planForceAndUser(const JacobianPattern& pattern);
+  // The state-local force elements (local_newton_forces.cpp): their value slots, and the
+  // elements the coloured passes leave out.
+  void planForceElements(const JacobianPattern& pattern);
+  void forceElementEntries(const Eigen::VectorXd& y, double* values);
+  struct ForcePlan;
+  template <int N>
+  void forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y);
   void planStabilisation(const JacobianPattern& pattern, int equation, EquationPlan& plan);
   // The SI2 entries of one side's gradient `out` (body slot i) over the chunk's directions.
   // `first`: the first pass that evaluates this side (it adds the values, not derivatives).
@@ -108,6 +124,22 @@ class LocalNewtonMatrix {
   // Per equation: (lambda, lambda); the value row over the 7 n position columns; the 6 n force
   // and moment rows over those columns and lambda (7 n + 1 each), n = bodyCount.
   std::vector<int> index_;
+  // Per state-local force element: its bodies and where its entries go. The entries of all of
+  // them are summed in forceSum_ (one slot per value entry they write, forceSlots_: its index in
+  // values) element by element in the residual's order, exactly as one row of the colour pass
+  // summed them, and added to values once.
+  struct ForcePlan {
+    int element = 0;           // index in ForceElements::elements()
+    int bodies[2] = {-1, -1};  // moving bodies of the I and J markers, distinct
+    int bodyCount = 0;
+    int slotI = -1, slotJ = -1;  // index into bodies; -1 for ground
+    int index = 0;  // first of its 6 n x 13 n slots in forceSlot_, row-major (body rows v, w)
+  };
+  std::vector<ForcePlan> forcePlans_;
+  std::vector<int> forceSlot_;   // per element entry: its slot in forceSum_
+  std::vector<int> forceSlots_;  // per slot: its index in values
+  std::vector<double> forceSum_;
+  std::vector<char> forceSkip_;  // per force element: 1 when planned here (not coloured)
   JacobianPattern forceAndUser_;
   std::vector<int> forceAndUserIndex_;  // per nonzero of forceAndUser_: its index in values
   std::vector<int> forceAndUserRows_;   // rows that pattern writes

@@ -97,7 +97,7 @@ void MultibodySystem::newtonMatrixSparse(double t, const Eigen::VectorXd& y,
   if (work.elementLocal) {
     // Element by element (local_newton_matrix.hpp), planned once per pattern.
     if (!work.local || work.local->patternStamp() != pattern.stamp)
-      work.local = std::make_shared<LocalNewtonMatrix>(*this, pattern);
+      work.local = std::make_shared<LocalNewtonMatrix>(*this, pattern, work.forceElementsLocal);
     if (work.local->usable()) {
       work.local->assemble(t, y, yp, cj, values, work);
       return;

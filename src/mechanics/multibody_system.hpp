@@ -137,13 +137,14 @@ class MultibodySystem {
   // element-local Newton matrix, local_newton_matrix.hpp, leaves to compressed AD); g must be
   // zero on entry. `derivativesOnly`: the caller reads the derivative parts of g only, so
   // elements whose inputs carry no derivative may be left out (ForceElements::addToResidual).
+  // `skip`: force elements left out (ForceElements::addToResidual).
   template <class T>
-  void forceAndUserResidual(double t, const T* y, const T* yp, T* g,
-                            bool derivativesOnly = false) const {
+  void forceAndUserResidual(double t, const T* y, const T* yp, T* g, bool derivativesOnly = false,
+                            const char* skip = nullptr) const {
     // As residual(): functions may read accelerations and reactions (dynamic_measures.hpp).
     const DynamicReads<T> base{yp, &constraints_};
     const DynamicReads<T> reads = forces_.readsWith(&base);  // and force read-backs (§4d)
-    forces_.addToResidual(t, y, g, &reads, derivativesOnly);
+    forces_.addToResidual(t, y, g, &reads, derivativesOnly, skip);
     user_.addToResidual(t, y, yp, g, &reads);
   }
   // True for the equation kinds whose constraint force has an analytic gradient here (Point,
