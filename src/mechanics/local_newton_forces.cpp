@@ -109,7 +109,6 @@ void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::Vec
   const ForceElements& fe = system_.forceElements();
   const ForceElementRef e = fe.elements()[static_cast<size_t>(plan.element)];
   constexpr int n = N / kBodyDirections;
-  // Each body's pose with its own 13 directions seeded (bodyPose on the body's 14 entries).
   // Each body's pose and marker state on its own 13 directions (bodyPose on the body's 14
   // entries), then widened to the element's 13 n: half the work of forming them on all 13 n
   // (docs/performance.md, "Force elements' Newton-matrix entries, element-local").
