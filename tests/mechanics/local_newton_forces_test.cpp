@@ -16,11 +16,11 @@
 #include <sstream>
 #include <string>
 
+#include "common/parallel_for.hpp"
 #include "language/reader.hpp"
 #include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/local_newton_matrix.hpp"
 #include "mechanics/multibody_system.hpp"
-#include "common/parallel_for.hpp"
 #include "model/model_builder.hpp"
 #include "support/random_state.hpp"
 
@@ -254,8 +254,7 @@ TEST(LocalNewtonForces, BitIdenticalForOneAndTwoThreadsOnThePool) {
       nonzero += byThreads[0](r, c) != 0.0 ? 1 : 0;
     }
   EXPECT_GT(nonzero, 500);
-  EXPECT_LT(largestDifference(byThreads[1], centralDifferences(s, 0.0, y, yp, 13.0)),
-            kDifferences);
+  EXPECT_LT(largestDifference(byThreads[1], centralDifferences(s, 0.0, y, yp, 13.0)), kDifferences);
 }
 
 }  // namespace
