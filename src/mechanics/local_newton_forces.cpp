@@ -44,6 +44,8 @@ constexpr size_t kParallelForceElements = 32;
 // Per marker side the terms of its three subtractions (ForceElements::applyLoad): the force from
 // the force rows, its moment and the torque from the moment rows, 3 rows each.
 constexpr int kSideTerms = 9;
+// Which of them a side wrote (forceTermsWritten_).
+constexpr char kForceTerms = 1, kTorqueTerm = 2;
 
 template <class T>
 MarkerState<T> markerOn(const model::Marker& mk, const BodyPose<T>* pose) {
@@ -124,12 +126,13 @@ void LocalNewtonMatrix::planForceElements(const JacobianPattern& p) {
   }
   forceSum_.assign(forceSlots_.size(), 0.0);
   forceTerms_.assign(termCount, 0.0);
+  forceTermsWritten_.assign(2 * forcePlans_.size(), 0);
   parallelForces_ = forcePlans_.size() >= kParallelForceElements;
 }
 
 template <int N>
 void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y,
-                                         double* out) const {
+                                         double* out, char* written) const {
   using S = DualVec<N>;
   const StateLayout& l = system_.layout();
   const model::Model& m = system_.model();
@@ -166,33 +169,47 @@ void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::Vec
   const MarkerState<S>& mj = state[1];
   const ElementLoads<S> loads = fe.stateLocalLoads(e, mi, mj);
   // Each subtraction applyLoad makes, on rows of its own starting from zero (0 - a is -a), in
-  // the order it makes them: I's side, then J's.
-  auto side = [&](const BodyPose<S>& body, const V3<S>& point, const V3<S>& force,
+  // the order it makes them: I's side, then J's. `written` tells the reduction which it made
+  // (kForceTerms: the force and its moment; kTorqueTerm: the torque); the others are left out,
+  // as the residual leaves them out.
+  auto side = [&](int which, const BodyPose<S>& body, const V3<S>& point, const V3<S>& force,
                   const V3<S>& torque, bool applied) {
-    S v[3], w[3], t[3], unused[3];
-    if (applied) {
-      ForceElements::applyLoad(body, point, force, torque, loads.hasForce, false, v, w);
-      ForceElements::applyLoad(body, point, force, torque, false, loads.hasTorque, unused, t);
+    const char parts = static_cast<char>(
+        applied ? (loads.hasForce ? kForceTerms : 0) | (loads.hasTorque ? kTorqueTerm : 0) : 0);
+    written[which] = parts;
+    auto store = [&](const S* rows, double* to) {
+      for (int r = 0; r < 3; ++r) std::copy(rows[r].d, rows[r].d + N, to + r * N);
+    };
+    if ((parts & kForceTerms) != 0) {
+      S v[3], w[3];
+      ForceElements::applyLoad(body, point, force, torque, true, false, v, w);
+      store(v, out);
+      store(w, out + 3 * N);
     }
-    for (const S* rows : {v, w, t})
-      for (int r = 0; r < 3; ++r, out += N) std::copy(rows[r].d, rows[r].d + N, out);
+    if ((parts & kTorqueTerm) != 0) {
+      S unused[3], t[3];
+      ForceElements::applyLoad(body, point, force, torque, false, true, unused, t);
+      store(t, out + 6 * N);
+    }
+    out += kSideTerms * N;
   };
-  if (plan.slotI >= 0) side(pose[plan.slotI], mi.p, loads.force, loads.torque, true);
+  if (plan.slotI >= 0) side(0, pose[plan.slotI], mi.p, loads.force, loads.torque, true);
   if (plan.slotJ >= 0)
-    side(pose[plan.slotJ], loads.reactionPoint, loads.reactionForce, loads.reactionTorque,
+    side(1, pose[plan.slotJ], loads.reactionPoint, loads.reactionForce, loads.reactionTorque,
          loads.reactionMarker >= 0);
 }
 
 void LocalNewtonMatrix::forceElementEntries(const Eigen::VectorXd& y, double* values) {
   if (forcePlans_.empty()) return;
   double* terms = forceTerms_.data();
+  char* written = forceTermsWritten_.data();
   auto passes = [&](int, int begin, int end) {
     for (int k = begin; k < end; ++k) {
       const ForcePlan& plan = forcePlans_[static_cast<size_t>(k)];
       if (plan.bodyCount == 1)
-        forceElementPass<kBodyDirections>(plan, y, terms + plan.terms);
+        forceElementPass<kBodyDirections>(plan, y, terms + plan.terms, written + 2 * k);
       else
-        forceElementPass<2 * kBodyDirections>(plan, y, terms + plan.terms);
+        forceElementPass<2 * kBodyDirections>(plan, y, terms + plan.terms, written + 2 * k);
     }
   };
   const int count = static_cast<int>(forcePlans_.size());
@@ -202,19 +219,29 @@ void LocalNewtonMatrix::forceElementEntries(const Eigen::VectorXd& y, double* va
     passes(0, 0, count);
   // The reduction, on this thread in element order whatever ran the passes: per element its
   // sides' force terms into the force rows, then the force's moment and the torque into the
-  // moment rows, as ForceElements::addToResidual subtracts them.
+  // moment rows, as ForceElements::addToResidual subtracts them (the terms a side did not
+  // write are ones the residual does not subtract).
   std::fill(forceSum_.begin(), forceSum_.end(), 0.0);
   const double* term = forceTerms_.data();
+  const char* parts = forceTermsWritten_.data();
   for (const ForcePlan& plan : forcePlans_) {
     const int directions = kBodyDirections * plan.bodyCount;
     const int* slot = &forceSlot_[static_cast<size_t>(plan.index)];
-    for (int body : {plan.slotI, plan.slotJ}) {
+    auto add = [&](int body, int rows, const double* from) {
+      for (int r = 0; r < 3; ++r, from += directions) {
+        const int* row = slot + (6 * body + rows + r) * directions;
+        for (int j = 0; j < directions; ++j) forceSum_[row[j]] += from[j];
+      }
+    };
+    for (int which = 0; which < 2; ++which, ++parts) {
+      const int body = which == 0 ? plan.slotI : plan.slotJ;
       if (body < 0) continue;
-      for (int part = 0; part < 3; ++part)  // force, force's moment, torque
-        for (int r = 0; r < 3; ++r) {
-          const int* row = slot + (6 * body + (part == 0 ? r : 3 + r)) * directions;
-          for (int j = 0; j < directions; ++j, ++term) forceSum_[row[j]] += *term;
-        }
+      if ((*parts & kForceTerms) != 0) {
+        add(body, 0, term);                  // the force, into the force rows
+        add(body, 3, term + 3 * directions);  // its moment, into the moment rows
+      }
+      if ((*parts & kTorqueTerm) != 0) add(body, 3, term + 6 * directions);
+      term += kSideTerms * directions;
     }
   }
   for (size_t s = 0; s < forceSlots_.size(); ++s) values[forceSlots_[s]] += forceSum_[s];

@@ -82,10 +82,12 @@ class LocalNewtonMatrix {
   void planForceElements(const JacobianPattern& pattern);
   void forceElementEntries(const Eigen::VectorXd& y, double* values);
   struct ForcePlan;
-  // One element's pass: writes its terms (ForcePlan::terms) to out; reads nothing it or another
+  // One element's pass: writes its terms (ForcePlan::terms) to out and which it wrote to
+  // written (2 flags: I, J); reads nothing it or another
   // pass writes, so the passes may run on any threads (local_newton_forces.cpp).
   template <int N>
-  void forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y, double* out) const;
+  void forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y, double* out,
+                        char* written) const;
   void planStabilisation(const JacobianPattern& pattern, int equation, EquationPlan& plan);
   // The SI2 entries of one side's gradient `out` (body slot i) over the chunk's directions.
   // `first`: the first pass that evaluates this side (it adds the values, not derivatives).
@@ -148,6 +150,7 @@ class LocalNewtonMatrix {
   std::vector<int> forceSlots_;  // per slot: its index in values
   std::vector<double> forceSum_;
   std::vector<double> forceTerms_;
+  std::vector<char> forceTermsWritten_;  // per element and side (I, J): which terms it wrote
   bool parallelForces_ = false;  // enough elements for the passes to go to the thread pool
   std::vector<char> forceSkip_;  // per force element: 1 when planned here (not coloured)
   JacobianPattern forceAndUser_;
