@@ -237,7 +237,7 @@ void LocalNewtonMatrix::forceElementEntries(const Eigen::VectorXd& y, double* va
       const int body = which == 0 ? plan.slotI : plan.slotJ;
       if (body < 0) continue;
       if ((*parts & kForceTerms) != 0) {
-        add(body, 0, term);                  // the force, into the force rows
+        add(body, 0, term);                   // the force, into the force rows
         add(body, 3, term + 3 * directions);  // its moment, into the moment rows
       }
       if ((*parts & kTorqueTerm) != 0) add(body, 3, term + 6 * directions);
