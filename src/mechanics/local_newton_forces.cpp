@@ -37,8 +37,9 @@ using L = StateLayout;
 constexpr int kBodyDirections = L::kMu;
 
 // Below this many state-local force elements their passes stay on the calling thread: waking a
-// worker costs more than it saves (measured, docs/performance.md "Force elements'
-// Newton-matrix entries on two threads").
+// worker (tens of microseconds) would cost more than half of ~10 us per element saves. An
+// estimate, the colour passes' value: the second core was never free to measure it
+// (docs/performance.md, "Force elements' Newton-matrix entries on two threads").
 constexpr size_t kParallelForceElements = 32;
 
 // Per marker side the terms of its three subtractions (ForceElements::applyLoad): the force from
