@@ -37,7 +37,7 @@ using L = StateLayout;
 constexpr int kBodyDirections = L::kMu;
 
 // Below this many state-local force elements their passes stay on the calling thread: waking a
-// worker (tens of microseconds) would cost more than half of ~10 us per element saves. An
+// worker (tens of microseconds) costs more than sharing out a few ~10 us passes saves. An
 // estimate, the colour passes' value: the second core was never free to measure it
 // (docs/performance.md, "Force elements' Newton-matrix entries on two threads").
 constexpr size_t kParallelForceElements = 32;
