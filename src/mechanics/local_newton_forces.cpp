@@ -7,6 +7,16 @@
 // Newton-matrix entries, element-local"). The loads do not read y', so the c_j columns get
 // nothing from them.
 //
+// The passes are independent, so above kParallelForceElements they run on the thread pool
+// (common/parallel_for.hpp; docs/architecture.md, "Threads"): each element writes its terms into
+// its own slots of forceTerms_, and one serial loop then adds them up in element order. Its terms
+// are kept one per subtraction the residual makes (the force, the force's moment and the torque,
+// per marker side), not summed within the element: a moment row receives two terms from a BUSHING
+// or FIELD, and s - a - b is not s + (-a - b) in floating point. Adding 0 - a is adding -a, which
+// IEEE makes subtracting a, and a sum that starts at +0 and only has numbers subtracted from it
+// never becomes -0: the sums are the running subtraction's to the bit, for any thread count and
+// with the pool or without.
+//
 // Each direction of a DualVec carries the same operations as a Dual<double> seeded along it
 // (local_dual.hpp), and each entry is summed element by element in the residual's order starting
 // from zero, as the colour pass summed its row: with only such elements, the matrix is the colour
@@ -14,6 +24,7 @@
 
 #include <algorithm>
 
+#include "common/parallel_for.hpp"
 #include "mechanics/local_newton_matrix.hpp"
 #include "mechanics/multibody_system.hpp"
 
@@ -24,6 +35,18 @@ using L = StateLayout;
 
 // Directions per body: r (3), e (4), v (3), w (3), the state entries kR .. kW + 2; mu is not read.
 constexpr int kBodyDirections = L::kMu;
+
+// Below this many state-local force elements their passes stay on the calling thread: waking a
+// worker (tens of microseconds) costs more than sharing out a few ~10 us passes saves. An
+// estimate, the colour passes' value: the second core was never free to measure it
+// (docs/performance.md, "Force elements' Newton-matrix entries on two threads").
+constexpr size_t kParallelForceElements = 32;
+
+// Per marker side the terms of its three subtractions (ForceElements::applyLoad): the force from
+// the force rows, its moment and the torque from the moment rows, 3 rows each.
+constexpr int kSideTerms = 9;
+// Which of them a side wrote (forceTermsWritten_).
+constexpr char kForceTerms = 1, kTorqueTerm = 2;
 
 template <class T>
 MarkerState<T> markerOn(const model::Marker& mk, const BodyPose<T>* pose) {
@@ -61,6 +84,7 @@ void LocalNewtonMatrix::planForceElements(const JacobianPattern& p) {
   const ForceElements& fe = system_.forceElements();
   const auto& elements = fe.elements();
   std::vector<int> slotOf(static_cast<size_t>(nonZeros_), -1);
+  size_t termCount = 0;
   for (int k = 0; k < static_cast<int>(elements.size()) && usable_; ++k) {
     const ForceElementRef& e = elements[k];
     if (!fe.isStateLocal(e)) continue;
@@ -78,7 +102,10 @@ void LocalNewtonMatrix::planForceElements(const JacobianPattern& p) {
     plan.slotI = slotOfBody(bi);
     plan.slotJ = slotOfBody(bj);
     plan.index = static_cast<int>(forceSlot_.size());
+    plan.terms = termCount;
     const int n = plan.bodyCount;
+    termCount += (plan.slotI >= 0 ? 1 : 0) * kSideTerms * kBodyDirections * n +
+                 (plan.slotJ >= 0 ? 1 : 0) * kSideTerms * kBodyDirections * n;
     for (int i = 0; i < n; ++i)
       for (int r = 0; r < 6; ++r) {
         const int row = l.body(plan.bodies[i]) + (r < 3 ? L::kV + r : L::kW + r - 3);
@@ -99,10 +126,14 @@ void LocalNewtonMatrix::planForceElements(const JacobianPattern& p) {
     forcePlans_.push_back(plan);
   }
   forceSum_.assign(forceSlots_.size(), 0.0);
+  forceTerms_.assign(termCount, 0.0);
+  forceTermsWritten_.assign(2 * forcePlans_.size(), 0);
+  parallelForces_ = forcePlans_.size() >= kParallelForceElements;
 }
 
 template <int N>
-void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y) {
+void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y,
+                                         double* out, char* written) const {
   using S = DualVec<N>;
   const StateLayout& l = system_.layout();
   const model::Model& m = system_.model();
@@ -138,33 +169,81 @@ void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::Vec
   const MarkerState<S>& mi = state[0];
   const MarkerState<S>& mj = state[1];
   const ElementLoads<S> loads = fe.stateLocalLoads(e, mi, mj);
-  // The rows' sums so far, in the derivative parts: the element subtracts its loads from them
-  // as ForceElements::addToResidual does from the residual's rows.
-  const int* slot = &forceSlot_[static_cast<size_t>(plan.index)];
-  S g[n][6];
-  for (int i = 0; i < n; ++i)
-    for (int r = 0; r < 6; ++r)
-      for (int j = 0; j < N; ++j) g[i][r].d[j] = forceSum_[slot[(6 * i + r) * N + j]];
-  if (plan.slotI >= 0)
-    ForceElements::applyLoad(pose[plan.slotI], mi.p, loads.force, loads.torque, loads.hasForce,
-                             loads.hasTorque, g[plan.slotI], g[plan.slotI] + 3);
-  if (loads.reactionMarker >= 0 && plan.slotJ >= 0)
-    ForceElements::applyLoad(pose[plan.slotJ], loads.reactionPoint, loads.reactionForce,
-                             loads.reactionTorque, loads.hasForce, loads.hasTorque, g[plan.slotJ],
-                             g[plan.slotJ] + 3);
-  for (int i = 0; i < n; ++i)
-    for (int r = 0; r < 6; ++r)
-      for (int j = 0; j < N; ++j) forceSum_[slot[(6 * i + r) * N + j]] = g[i][r].d[j];
+  // Each subtraction applyLoad makes, on rows of its own starting from zero (0 - a is -a), in
+  // the order it makes them: I's side, then J's. `written` tells the reduction which it made
+  // (kForceTerms: the force and its moment; kTorqueTerm: the torque); the others are left out,
+  // as the residual leaves them out.
+  auto side = [&](int which, const BodyPose<S>& body, const V3<S>& point, const V3<S>& force,
+                  const V3<S>& torque, bool applied) {
+    const char parts = static_cast<char>(
+        applied ? (loads.hasForce ? kForceTerms : 0) | (loads.hasTorque ? kTorqueTerm : 0) : 0);
+    written[which] = parts;
+    auto store = [&](const S* rows, double* to) {
+      for (int r = 0; r < 3; ++r) std::copy(rows[r].d, rows[r].d + N, to + r * N);
+    };
+    if ((parts & kForceTerms) != 0) {
+      S v[3], w[3];
+      ForceElements::applyLoad(body, point, force, torque, true, false, v, w);
+      store(v, out);
+      store(w, out + 3 * N);
+    }
+    if ((parts & kTorqueTerm) != 0) {
+      S unused[3], t[3];
+      ForceElements::applyLoad(body, point, force, torque, false, true, unused, t);
+      store(t, out + 6 * N);
+    }
+    out += kSideTerms * N;
+  };
+  if (plan.slotI >= 0) side(0, pose[plan.slotI], mi.p, loads.force, loads.torque, true);
+  if (plan.slotJ >= 0)
+    side(1, pose[plan.slotJ], loads.reactionPoint, loads.reactionForce, loads.reactionTorque,
+         loads.reactionMarker >= 0);
 }
 
 void LocalNewtonMatrix::forceElementEntries(const Eigen::VectorXd& y, double* values) {
   if (forcePlans_.empty()) return;
+  double* terms = forceTerms_.data();
+  char* written = forceTermsWritten_.data();
+  auto passes = [&](int, int begin, int end) {
+    for (int k = begin; k < end; ++k) {
+      const ForcePlan& plan = forcePlans_[static_cast<size_t>(k)];
+      if (plan.bodyCount == 1)
+        forceElementPass<kBodyDirections>(plan, y, terms + plan.terms, written + 2 * k);
+      else
+        forceElementPass<2 * kBodyDirections>(plan, y, terms + plan.terms, written + 2 * k);
+    }
+  };
+  const int count = static_cast<int>(forcePlans_.size());
+  if (parallelForces_)
+    parallelFor(count, passes);
+  else
+    passes(0, 0, count);
+  // The reduction, on this thread in element order whatever ran the passes: per element its
+  // sides' force terms into the force rows, then the force's moment and the torque into the
+  // moment rows, as ForceElements::addToResidual subtracts them (the terms a side did not
+  // write are ones the residual does not subtract).
   std::fill(forceSum_.begin(), forceSum_.end(), 0.0);
+  const double* term = forceTerms_.data();
+  const char* parts = forceTermsWritten_.data();
   for (const ForcePlan& plan : forcePlans_) {
-    if (plan.bodyCount == 1)
-      forceElementPass<kBodyDirections>(plan, y);
-    else
-      forceElementPass<2 * kBodyDirections>(plan, y);
+    const int directions = kBodyDirections * plan.bodyCount;
+    const int* slot = &forceSlot_[static_cast<size_t>(plan.index)];
+    auto add = [&](int body, int rows, const double* from) {
+      for (int r = 0; r < 3; ++r, from += directions) {
+        const int* row = slot + (6 * body + rows + r) * directions;
+        for (int j = 0; j < directions; ++j) forceSum_[row[j]] += from[j];
+      }
+    };
+    for (int which = 0; which < 2; ++which, ++parts) {
+      const int body = which == 0 ? plan.slotI : plan.slotJ;
+      if (body < 0) continue;
+      if ((*parts & kForceTerms) != 0) {
+        add(body, 0, term);                   // the force, into the force rows
+        add(body, 3, term + 3 * directions);  // its moment, into the moment rows
+      }
+      if ((*parts & kTorqueTerm) != 0) add(body, 3, term + 6 * directions);
+      term += kSideTerms * directions;
+    }
   }
   for (size_t s = 0; s < forceSlots_.size(); ++s) values[forceSlots_[s]] += forceSum_[s];
 }

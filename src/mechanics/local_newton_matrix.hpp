@@ -56,6 +56,8 @@ class LocalNewtonMatrix {
   std::uint64_t patternStamp() const { return patternStamp_; }
   // How many force elements are formed element by element (local_newton_forces.cpp).
   int stateLocalForceElements() const { return static_cast<int>(forcePlans_.size()); }
+  // Whether their passes go to the thread pool (enough of them; local_newton_forces.cpp).
+  bool forceElementsOnThePool() const { return parallelForces_; }
   // Overwrites values (the pattern's nonzeros, column-major) with the Newton matrix; work's dual
   // vectors serve the compressed passes of the force elements and user equations.
   void assemble(double t, const Eigen::VectorXd& y, const Eigen::VectorXd& yp, double cj,
@@ -80,8 +82,12 @@ class LocalNewtonMatrix {
   void planForceElements(const JacobianPattern& pattern);
   void forceElementEntries(const Eigen::VectorXd& y, double* values);
   struct ForcePlan;
+  // One element's pass: writes its terms (ForcePlan::terms) to out and which it wrote to
+  // written (2 flags: I, J); reads nothing it or another
+  // pass writes, so the passes may run on any threads (local_newton_forces.cpp).
   template <int N>
-  void forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y);
+  void forceElementPass(const ForcePlan& plan, const Eigen::VectorXd& y, double* out,
+                        char* written) const;
   void planStabilisation(const JacobianPattern& pattern, int equation, EquationPlan& plan);
   // The SI2 entries of one side's gradient `out` (body slot i) over the chunk's directions.
   // `first`: the first pass that evaluates this side (it adds the values, not derivatives).
@@ -124,21 +130,28 @@ class LocalNewtonMatrix {
   // Per equation: (lambda, lambda); the value row over the 7 n position columns; the 6 n force
   // and moment rows over those columns and lambda (7 n + 1 each), n = bodyCount.
   std::vector<int> index_;
-  // Per state-local force element: its bodies and where its entries go. The entries of all of
-  // them are summed in forceSum_ (one slot per value entry they write, forceSlots_: its index in
-  // values) element by element in the residual's order, exactly as one row of the colour pass
-  // summed them, and added to values once.
+  // Per state-local force element: its bodies and where its entries go. Each element's pass
+  // writes its terms into its own range of forceTerms_ (on the thread pool when
+  // parallelForces_); one serial loop then sums them in forceSum_ (one slot per value entry they
+  // write, forceSlots_: its index in values) element by element in the residual's order, exactly
+  // as one row of the colour pass summed them, and adds them to values once.
   struct ForcePlan {
     int element = 0;           // index in ForceElements::elements()
     int bodies[2] = {-1, -1};  // moving bodies of the I and J markers, distinct
     int bodyCount = 0;
     int slotI = -1, slotJ = -1;  // index into bodies; -1 for ground
     int index = 0;  // first of its 6 n x 13 n slots in forceSlot_, row-major (body rows v, w)
+    // First of its terms in forceTerms_: per side on a moving body (I, then J), 3 x 3 rows
+    // (force, force's moment, torque) of 13 n derivatives each.
+    size_t terms = 0;
   };
   std::vector<ForcePlan> forcePlans_;
   std::vector<int> forceSlot_;   // per element entry: its slot in forceSum_
   std::vector<int> forceSlots_;  // per slot: its index in values
   std::vector<double> forceSum_;
+  std::vector<double> forceTerms_;
+  std::vector<char> forceTermsWritten_;  // per element and side (I, J): which terms it wrote
+  bool parallelForces_ = false;  // enough elements for the passes to go to the thread pool
   std::vector<char> forceSkip_;  // per force element: 1 when planned here (not coloured)
   JacobianPattern forceAndUser_;
   std::vector<int> forceAndUserIndex_;  // per nonzero of forceAndUser_: its index in values

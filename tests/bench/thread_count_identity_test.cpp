@@ -1,11 +1,13 @@
 // Bit-identical outputs for any thread count (docs/architecture.md, "Threads"): the openmss
 // program runs the nine ADAMS joint cases, the piston example, a spatial chain and a bushing
 // chain with OPENMSS_THREADS=1 and =2, and once more with =2, and every .req, .res and .msg
-// must be equal byte for byte across the three runs. The chain (300 constraint equations) and
-// the bushing chain (80 force elements) are above the sizes where the residual's constraint
-// rows and the Newton matrix's force colours go to the thread pool, so their second and third
-// runs take the parallel paths; the small models check that the serial path is untouched by the
-// setting and that a run repeats itself (the determinism guarantee).
+// must be equal byte for byte across the three runs. The bushing chain (80 BUSHINGs and
+// SPRINGDAMPERs) is above the size (32) where the Newton matrix's per-element force passes go to
+// the thread pool (mechanics/local_newton_forces.cpp), so its second and third runs take that
+// path: summing the passes' terms per thread instead of in element order made this test fail
+// (docs/performance.md, "Force elements' Newton-matrix entries on two threads"). The small
+// models check that the serial path is untouched by the setting and that a run repeats itself
+// (the determinism guarantee).
 
 #include <gtest/gtest.h>
 

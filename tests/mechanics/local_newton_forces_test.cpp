@@ -11,9 +11,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <random>
+#include <sstream>
 #include <string>
 
+#include "common/parallel_for.hpp"
 #include "language/reader.hpp"
 #include "mechanics/jacobian_pattern.hpp"
 #include "mechanics/local_newton_matrix.hpp"
@@ -192,6 +195,66 @@ TEST(LocalNewtonForces, BitIdenticalToTheColouredPassesItReplaces) {
     }
   EXPECT_GT(nonzero, 500);  // compares something: the three bodies' coupled blocks
   EXPECT_LT(largestDifference(e.local, centralDifferences(s, 0.0, y, yp, 13.0)), kDifferences);
+}
+
+// model(false) with its seven force elements repeated `copies` times (ids + 10 k): enough of
+// them for their passes to run on the thread pool (local_newton_forces.cpp).
+std::string manyElements(int copies) {
+  std::istringstream in(model(false));
+  std::string line, head, elements;
+  while (std::getline(in, line)) {
+    const bool element = line.starts_with("SPRINGDAMPER/") || line.starts_with("BUSHING/") ||
+                         line.starts_with("FIELD/") || line.starts_with("BEAM/");
+    if (element) elements += line + "\n";
+    if (line.starts_with("ACCGRAV")) break;
+    head += line + "\n";
+  }
+  for (int k = 1; k < copies; ++k) {
+    std::istringstream again(elements);
+    while (std::getline(again, line)) {
+      const size_t slash = line.find('/'), comma = line.find(',');
+      head += line.substr(0, slash + 1) +
+              std::to_string(std::stoi(line.substr(slash + 1, comma - slash - 1)) + 10 * k) +
+              line.substr(comma) + "\n";
+    }
+  }
+  return head + "ACCGRAV/JGRAV=-9.80665\nEND\n";
+}
+
+bool sameBits(double a, double b) { return std::memcmp(&a, &b, sizeof a) == 0; }
+
+// On the thread pool: one thread and two give the same matrix to the bit (the sign of zeros
+// included), and both are the coloured passes' (serial) to the bit: the passes write their own
+// terms and one loop sums them in element order (docs/architecture.md, "Threads").
+TEST(LocalNewtonForces, BitIdenticalForOneAndTwoThreadsOnThePool) {
+  const model::Model m = build(manyElements(6));
+  const MultibodySystem s(m);
+  std::mt19937 rng(37);
+  const Eigen::VectorXd y = testing::randomState(s, rng, testing::RandomMu::Yes);
+  const Eigen::VectorXd yp = Eigen::VectorXd::Random(s.layout().size());
+  const JacobianPattern pattern = newtonMatrixPattern(s);
+  Eigen::MatrixXd byThreads[2];
+  for (int threads : {1, 2}) {
+    setThreadCountForTesting(threads);
+    Eigen::SparseMatrix<double> a = pattern.matrix();
+    SparseJacobianWork work;
+    s.newtonMatrixSparse(0.0, y, yp, 13.0, pattern, a, work);
+    ASSERT_TRUE(work.local && work.local->usable());
+    EXPECT_EQ(work.local->stateLocalForceElements(), 42);
+    EXPECT_TRUE(work.local->forceElementsOnThePool());  // 42 >= the threshold, 32
+    byThreads[threads - 1] = Eigen::MatrixXd(a);
+  }
+  setThreadCountForTesting(0);
+  const Matrices e = evaluate(s, 0.0, y, yp, 13.0);
+  int nonzero = 0;
+  for (int r = 0; r < e.local.rows(); ++r)
+    for (int c = 0; c < e.local.cols(); ++c) {
+      EXPECT_TRUE(sameBits(byThreads[0](r, c), byThreads[1](r, c))) << r << ", " << c;
+      EXPECT_TRUE(sameBits(byThreads[0](r, c), e.colouredForces(r, c))) << r << ", " << c;
+      nonzero += byThreads[0](r, c) != 0.0 ? 1 : 0;
+    }
+  EXPECT_GT(nonzero, 500);
+  EXPECT_LT(largestDifference(byThreads[1], centralDifferences(s, 0.0, y, yp, 13.0)), kDifferences);
 }
 
 }  // namespace
