@@ -557,8 +557,8 @@ stopped run had used), with our tip error in brackets (all rows are in "Results"
 each integrator's best ERROR setting, then every setting; then how each of our settings' CPU
 time per step grows from N = 100 to the largest N. Issue 21 asks for a ratio of at most 1.0 at
 N = 100 and 1000 on the chains (0.5 on the stiff models), and time per step growing no faster
-than N^1.1 from N = 1000 to 10,000 (measured by `bench/scaling.py`, docs/performance.md
-"Scaling").
+than N^1.1 from N = 1000 to 10,000 (measured by `bench/scaling.py`, hand-written section
+"Large models and two threads" below; the plot under "Scaling" shows N = 10 to 1000).
 
 {args.summary}
 
