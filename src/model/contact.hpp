@@ -88,6 +88,13 @@ inline double frustumHalfAngle(const ContactSolid& s) {
   return std::atan(std::abs(s.size[0] - s.size[1]) / std::abs(s.size[2]));
 }
 
+// Whether the pair goes to the FCL module (the dispatch of mechanics/contact/narrow_phase.hpp
+// and curved_narrow_phase.hpp): 3-D solids, one an ELLIPSOID of unequal scales or an EXTERNAL
+// shell, or two frustums steeper than kMaxFrustumPairHalfAngle, neither a PLANE nor a TORUS
+// (those are analytic). The builder opens the module for such a pair (docs/architecture.md,
+// "FCL module").
+bool libraryPair(const ContactSolid& a, const ContactSolid& b);
+
 struct Contact {
   // User: NORMAL_FUNCTION=USER(...), the force from CNFSUB (normalRoutine).
   enum class NormalLaw { Impact, Poisson, User };

@@ -14,6 +14,7 @@
 #include "model/graphics_builder.hpp"
 #include "model/shell_file.hpp"
 #include "model/statement_arguments.hpp"
+#include "user/fcl_module.hpp"
 
 namespace openmss::model {
 namespace {
@@ -417,6 +418,25 @@ bool pairsSupported(const Statement& s, const Contact& c, Diagnostics& diags) {
   return ok;
 }
 
+// A pair that needs FCL: the module must open (only such a model opens it), else the CONTACT is
+// refused naming the pair and the paths tried (docs/architecture.md, "FCL module").
+bool fclModuleAvailable(const Statement& s, const Contact& c, Diagnostics& diags) {
+  for (const ContactSolid& a : c.iSolids)
+    for (const ContactSolid& b : c.jSolids) {
+      if (!libraryPair(a, b)) continue;
+      std::string why;
+      if (user::fclModuleEntry(why)) return true;
+      diags.error(s.where, s.subject(),
+                  "GRAPHICS/" + std::to_string(a.graphicsId) + " against GRAPHICS/" +
+                      std::to_string(b.graphicsId) +
+                      " needs the FCL narrow phase, whose module did not load: " + why,
+                  "Build the openmss_fcl target (or install it in LIBDIR/openmss), or set "
+                  "OPENMSS_FCL_MODULE to its path.");
+      return false;
+    }
+  return true;
+}
+
 }  // namespace
 
 void buildContacts(const std::vector<const Statement*>& statements,
@@ -456,12 +476,24 @@ void buildContacts(const std::vector<const Statement*>& statements,
     }
     if (!checkPlanarContact(*s, c, model, diags)) continue;
     if (!pairsSupported(*s, c, diags)) continue;
+    if (!fclModuleAvailable(*s, c, diags)) continue;
     if (!bindContactUserLaws(*s, model, c, diags)) continue;
     c.iMarker = c.iSolids.front().marker;
     c.jMarker = c.jSolids.front().marker;
     model.contacts.push_back(std::move(c));
   }
   if (done) done(*statements.back());
+}
+
+bool libraryPair(const ContactSolid& a, const ContactSolid& b) {
+  using S = ContactSolid::Shape;
+  if (planarShape(a.shape) || planarShape(b.shape)) return false;
+  for (S s : {a.shape, b.shape})
+    if (s == S::Plane || s == S::Torus) return false;
+  auto curved = [](S s) { return s == S::Ellipsoid || s == S::Mesh; };
+  if (curved(a.shape) || curved(b.shape)) return true;
+  return a.shape == S::Frustum && b.shape == S::Frustum &&
+         std::max(frustumHalfAngle(a), frustumHalfAngle(b)) > kMaxFrustumPairHalfAngle;
 }
 
 int findContact(const Model& model, long id) {

@@ -1,5 +1,8 @@
 // FCL as the library narrow phase of CONTACT (docs/theory.md §6c, "FCL"). Everything here works
 // on doubles: the partials are made on T by fcl_narrow_phase.hpp from the contact frame.
+// Built alone as the module openmss_fcl.so (docs/architecture.md, "FCL module"): everything is
+// hidden but the extern "C" entry point at the end, and it needs nothing from the program but
+// header-only code (linked with --no-undefined, src/CMakeLists.txt).
 
 #include "mechanics/contact/fcl_narrow_phase.hpp"
 
@@ -15,6 +18,7 @@
 #include <memory>
 #include <mutex>
 #include <numbers>
+#include <type_traits>
 #include <utility>
 
 namespace openmss::mechanics::contact {
@@ -217,3 +221,15 @@ void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& gi
 }
 
 }  // namespace openmss::mechanics::contact
+
+// The module's one export (user::kFclEntryName), called by fcl_module.cpp.
+extern "C" __attribute__((visibility("default"))) void openmss_fcl_library_contacts(
+    const openmss::model::ContactSolid* si,
+    const openmss::mechanics::contact::SolidFrame<double>* fi,
+    const openmss::model::ContactSolid* sj,
+    const openmss::mechanics::contact::SolidFrame<double>* fj,
+    std::vector<openmss::mechanics::contact::LibraryContact>* out) {
+  static_assert(std::is_same_v<decltype(openmss_fcl_library_contacts),
+                               openmss::mechanics::contact::LibraryContactsEntry>);
+  openmss::mechanics::contact::libraryContacts(*si, *fi, *sj, *fj, *out);
+}

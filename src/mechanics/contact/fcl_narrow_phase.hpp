@@ -23,6 +23,12 @@ struct LibraryContact {
   double depth;
 };
 
+// The module's entry point (user::kFclEntryName, extern "C"): libraryContacts by pointers. Module
+// and program are built by one compiler in one build, so the C++ types cross as they are.
+using LibraryContactsEntry = void(const model::ContactSolid*, const SolidFrame<double>*,
+                                  const model::ContactSolid*, const SolidFrame<double>*,
+                                  std::vector<LibraryContact>*);
+
 // Sides of the polygon a FRUSTUM of unequal radii is given to FCL as (a convex polytope): its
 // rims' chordal error is R (1 - cos(pi / kFrustumSides)) = 3.0e-4 R. A CYLINDER is FCL's exact
 // cylinder.
@@ -36,7 +42,8 @@ SolidFrame<double> valueFrame(const SolidFrame<T>& f) {
 }
 
 // The contacts FCL finds between solid si (frame fi) and sj (frame fj), appended to `out`.
-// Meshes give one per touching triangle (pair); convex solids at most one.
+// Meshes give one per touching triangle (pair); convex solids at most one. A call into the FCL
+// module, opened on the first call (fcl_module.cpp; docs/architecture.md, "FCL module").
 void libraryContacts(const model::ContactSolid& si, const SolidFrame<double>& fi,
                      const model::ContactSolid& sj, const SolidFrame<double>& fj,
                      std::vector<LibraryContact>& out);

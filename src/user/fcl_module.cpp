@@ -1,0 +1,85 @@
+#include "user/fcl_module.hpp"
+
+#include <dlfcn.h>
+
+#include <atomic>
+#include <cstdlib>
+#include <filesystem>
+#include <mutex>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace openmss::user {
+namespace {
+
+std::atomic<bool> loaded{false};
+
+// Where the module may be: OPENMSS_FCL_MODULE if set (then that path only); else the build
+// tree's module (OPENMSS_FCL_MODULE_PATH, set by src/CMakeLists.txt), then
+// openmss/openmss_fcl.so next to the binary holding this code (an installed libopenmss:
+// src/capi/CMakeLists.txt installs the module in LIBDIR/openmss).
+std::vector<std::string> candidates() {
+  std::vector<std::string> paths;
+  if (const char* env = std::getenv("OPENMSS_FCL_MODULE"); env && *env) return {env};
+#ifdef OPENMSS_FCL_MODULE_PATH
+  paths.emplace_back(OPENMSS_FCL_MODULE_PATH);
+#endif
+  Dl_info info{};
+  if (::dladdr(reinterpret_cast<void*>(&fclModuleLoaded), &info) && info.dli_fname) {
+    const std::filesystem::path self = std::filesystem::absolute(info.dli_fname);
+    paths.push_back((self.parent_path() / "openmss" / "openmss_fcl.so").string());
+  }
+  return paths;
+}
+
+struct Entry {  // the entry point, or null and why
+  void* address = nullptr;
+  std::string why;
+};
+
+Entry open() {
+  Entry e;
+  for (const std::string& path : candidates()) {
+    if (!std::filesystem::exists(path)) {
+      e.why += (e.why.empty() ? "" : "; ") + path + ": no such file";
+      continue;
+    }
+    // Never closed: its functions are called until the process ends.
+    void* handle = ::dlopen(path.c_str(), RTLD_NOW | RTLD_LOCAL);
+    if (!handle) {
+      const char* message = ::dlerror();
+      e.why += (e.why.empty() ? "" : "; ") + path + ": " + (message ? message : "dlopen failed");
+      continue;
+    }
+    e.address = ::dlsym(handle, kFclEntryName);
+    if (e.address) {
+      loaded = true;
+      e.why.clear();
+      return e;
+    }
+    e.why += (e.why.empty() ? "" : "; ") + path + ": no symbol " + kFclEntryName;
+  }
+  if (e.why.empty()) e.why = "no path to try";
+  return e;
+}
+
+}  // namespace
+
+void* fclModuleEntry(std::string& why) {
+  // Opened once per process; a failure is not kept, so that a later call may find the module
+  // (its callers refuse the model: a failure is never on the path of a run).
+  static std::mutex lock;
+  static void* address = nullptr;
+  std::lock_guard<std::mutex> guard(lock);
+  if (!address) {
+    Entry e = open();
+    address = e.address;
+    why = std::move(e.why);
+  }
+  return address;
+}
+
+bool fclModuleLoaded() { return loaded; }
+
+}  // namespace openmss::user
