@@ -15,21 +15,23 @@ namespace {
 
 std::atomic<bool> loaded{false};
 
-// Where the module may be: OPENMSS_FCL_MODULE if set (then that path only); else the build
-// tree's module (OPENMSS_FCL_MODULE_PATH, set by src/CMakeLists.txt), then
+// Where the module may be: OPENMSS_FCL_MODULE if set (then that path only); else
 // openmss/openmss_fcl.so next to the binary holding this code (an installed libopenmss:
-// src/capi/CMakeLists.txt installs the module in LIBDIR/openmss).
+// src/capi/CMakeLists.txt installs the module in LIBDIR/openmss; the build tree's libopenmss in
+// build/lib finds build/lib/openmss), then the build tree's module (OPENMSS_FCL_MODULE_PATH,
+// set by src/CMakeLists.txt) for the program and the tests. An installed library tries its own
+// module first: a build tree left behind may hold a module of another version.
 std::vector<std::string> candidates() {
-  std::vector<std::string> paths;
   if (const char* env = std::getenv("OPENMSS_FCL_MODULE"); env && *env) return {env};
-#ifdef OPENMSS_FCL_MODULE_PATH
-  paths.emplace_back(OPENMSS_FCL_MODULE_PATH);
-#endif
+  std::vector<std::string> paths;
   Dl_info info{};
   if (::dladdr(reinterpret_cast<void*>(&fclModuleLoaded), &info) && info.dli_fname) {
     const std::filesystem::path self = std::filesystem::absolute(info.dli_fname);
     paths.push_back((self.parent_path() / "openmss" / "openmss_fcl.so").string());
   }
+#ifdef OPENMSS_FCL_MODULE_PATH
+  paths.emplace_back(OPENMSS_FCL_MODULE_PATH);
+#endif
   return paths;
 }
 

@@ -33,3 +33,30 @@ mkdir "$tmp/out"
   --compare "$source/examples/embedding/pendulum_pid.adm" | tee "$tmp/run.log"
 grep -q "compared 514 values at 257 sample times" "$tmp/run.log"
 test -s "$tmp/out/pendulum_plant.msg"
+# The FCL module installed in LIBDIR/openmss and opened from there by the installed library
+# (user/fcl_module.cpp looks next to the library first): an ELLIPSOID on a BOX, 0.05 s from
+# resting on it; free fall would end at 0.0877, the contact holds it above 0.098 (its static
+# penetration is (m g / k)^(1/e) = 4.6e-4).
+test -f "$libdir/openmss/openmss_fcl.so" || { echo "no $libdir/openmss/openmss_fcl.so"; exit 1; }
+cat > "$tmp/fcl.adm" <<'ADM'
+fcl
+UNITS/FORCE=NEWTON, MASS=KILOGRAM, LENGTH=METER, TIME=SECOND
+PART/1, GROUND
+MARKER/10, PART=1, QP=-1,-1,-1
+GRAPHICS/1, BOX, CORNER=10, X=2, Y=2, Z=1
+PART/2, MASS=1, CM=20, IP=0.004,0.004,0.004, QG=0,0,0.1
+MARKER/20, PART=2
+GRAPHICS/2, ELLIPSOID, CM=20, XSCALE=0.6, YSCALE=0.4, ZSCALE=0.2
+CONTACT/1, IGEOM=2, JGEOM=1, IMPACT, STIFFNESS=1e6, DAMPING=100, DMAX=1e-3, EXPONENT=1.5
+VARIABLE/1, FUNCTION=DZ(20)
+ACCGRAV/KGRAV=-9.81
+END
+ADM
+# shellcheck disable=SC2046
+cc -std=c11 -Wall -Wextra -Werror "$source/tests/capi/fcl_contact.c" -o "$tmp/fcl_contact" \
+  $(pkg-config --cflags --libs openmss) -Wl,-rpath,"$libdir"
+LD_DEBUG=files "$tmp/fcl_contact" "$tmp/fcl.adm" "$tmp/out" > "$tmp/fcl.log" 2> "$tmp/fcl.ld"
+cat "$tmp/fcl.log"
+grep -q "file=$libdir/openmss/openmss_fcl.so" "$tmp/fcl.ld" ||
+  { echo "the module was not opened from $libdir/openmss"; grep openmss_fcl "$tmp/fcl.ld"; exit 1; }
+awk '/^height/ { exit !($2 > 0.098) }' "$tmp/fcl.log"
