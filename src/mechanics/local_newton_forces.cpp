@@ -27,6 +27,7 @@
 #include "common/parallel_for.hpp"
 #include "mechanics/local_newton_matrix.hpp"
 #include "mechanics/multibody_system.hpp"
+#include "mechanics/pose.hpp"
 
 namespace openmss::mechanics {
 namespace {
@@ -47,18 +48,6 @@ constexpr size_t kParallelForceElements = 32;
 constexpr int kSideTerms = 9;
 // Which of them a side wrote (forceTermsWritten_).
 constexpr char kForceTerms = 1, kTorqueTerm = 2;
-
-template <class T>
-MarkerState<T> markerOn(const model::Marker& mk, const BodyPose<T>* pose) {
-  if (pose != nullptr) return markerStateOnBody(mk, *pose);
-  // A ground marker, as markerState builds it.
-  MarkerState<T> s;
-  s.p = V3<T>::from(mk.position);
-  s.a = M3<T>::from(mk.orientation);
-  s.pdot = {T(0.0), T(0.0), T(0.0)};
-  s.w = s.pdot;
-  return s;
-}
 
 // A 13-direction dual placed at directions offset .. offset + 12 of an N-direction one.
 template <int N>
@@ -165,7 +154,7 @@ void LocalNewtonMatrix::forceElementPass(const ForcePlan& plan, const Eigen::Vec
       }
   }
   for (int side = 0; side < 2; ++side)
-    if (slots[side] < 0) state[side] = markerOn<S>(m.markers[markers[side]], nullptr);
+    if (slots[side] < 0) state[side] = groundMarkerState<S>(m.markers[markers[side]]);
   const MarkerState<S>& mi = state[0];
   const MarkerState<S>& mj = state[1];
   const ElementLoads<S> loads = fe.stateLocalLoads(e, mi, mj);

@@ -55,18 +55,24 @@ MarkerState<T> markerStateOnBody(const model::Marker& mk, const BodyPose<T>& b) 
   return s;
 }
 
+// The state of marker mk on ground: its data-set frame, at rest.
 template <class T>
-MarkerState<T> markerState(const model::Model& m, const StateLayout& layout, int marker,
-                           const T* y) {
-  const model::Marker& mk = m.markers[marker];
-  const model::Part& part = m.parts[mk.part];
-  if (part.body >= 0) return markerStateOnBody(mk, bodyPose(layout, part.body, y));
+MarkerState<T> groundMarkerState(const model::Marker& mk) {
   MarkerState<T> s;
   s.p = V3<T>::from(mk.position);
   s.a = M3<T>::from(mk.orientation);
   s.pdot = {T(0.0), T(0.0), T(0.0)};
   s.w = s.pdot;
   return s;
+}
+
+template <class T>
+MarkerState<T> markerState(const model::Model& m, const StateLayout& layout, int marker,
+                           const T* y) {
+  const model::Marker& mk = m.markers[marker];
+  const model::Part& part = m.parts[mk.part];
+  if (part.body >= 0) return markerStateOnBody(mk, bodyPose(layout, part.body, y));
+  return groundMarkerState<T>(mk);
 }
 
 }  // namespace openmss::mechanics

@@ -22,6 +22,7 @@
 #include "mechanics/local_newton_matrix.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "support/newton_matrix_check.hpp"
 #include "support/random_state.hpp"
 
 namespace openmss::mechanics {
@@ -98,29 +99,6 @@ double largestDifference(const Eigen::MatrixXd& a, const Eigen::MatrixXd& b) {
   return worst;
 }
 
-// Central differences of the residual along the corrector's direction (y + h e_c,
-// y' + cj h e_c), h = 1e-6 max(1, |y_c|): good to about 1e-8 relative for these residuals.
-Eigen::MatrixXd centralDifferences(const MultibodySystem& s, double t, const Eigen::VectorXd& y,
-                                   const Eigen::VectorXd& yp, double cj) {
-  const int n = s.layout().size();
-  Eigen::MatrixXd fd(n, n);
-  for (int c = 0; c < n; ++c) {
-    const double h = 1e-6 * std::max(1.0, std::abs(y(c)));
-    Eigen::VectorXd yA = y, yB = y, pA = yp, pB = yp;
-    yA(c) += h;
-    yB(c) -= h;
-    if (s.layout().differential(c)) {
-      pA(c) += cj * h;
-      pB(c) -= cj * h;
-    }
-    Eigen::VectorXd gA(n), gB(n);
-    s.residual(t, yA.data(), pA.data(), gA.data());
-    s.residual(t, yB.data(), pB.data(), gB.data());
-    fd.col(c) = (gA - gB) / (2 * h);
-  }
-  return fd;
-}
-
 struct Matrices {
   Eigen::MatrixXd local, colouredForces, whole, dense;
   int localElements = 0, localElementsWithoutLocalForces = -1;
@@ -172,7 +150,8 @@ TEST(LocalNewtonForces, MatchesDenseColouredAndDifferencesWithBothPaths) {
     EXPECT_LT(largestDifference(e.local, e.dense), kRoundOff) << "trial " << trial;
     EXPECT_LT(largestDifference(e.local, e.whole), kRoundOff) << "trial " << trial;
     EXPECT_LT(largestDifference(e.local, e.colouredForces), kRoundOff) << "trial " << trial;
-    EXPECT_LT(largestDifference(e.local, centralDifferences(s, t, y, yp, cj)), kDifferences)
+    EXPECT_LT(largestDifference(e.local, testing::centralDifferenceMatrix(s, t, y, yp, cj)),
+              kDifferences)
         << "trial " << trial;
   }
 }
@@ -194,7 +173,8 @@ TEST(LocalNewtonForces, BitIdenticalToTheColouredPassesItReplaces) {
       nonzero += e.local(r, c) != 0.0 ? 1 : 0;
     }
   EXPECT_GT(nonzero, 500);  // compares something: the three bodies' coupled blocks
-  EXPECT_LT(largestDifference(e.local, centralDifferences(s, 0.0, y, yp, 13.0)), kDifferences);
+  EXPECT_LT(largestDifference(e.local, testing::centralDifferenceMatrix(s, 0.0, y, yp, 13.0)),
+            kDifferences);
 }
 
 // model(false) with its seven force elements repeated `copies` times (ids + 10 k): enough of
@@ -254,7 +234,8 @@ TEST(LocalNewtonForces, BitIdenticalForOneAndTwoThreadsOnThePool) {
       nonzero += byThreads[0](r, c) != 0.0 ? 1 : 0;
     }
   EXPECT_GT(nonzero, 500);
-  EXPECT_LT(largestDifference(byThreads[1], centralDifferences(s, 0.0, y, yp, 13.0)), kDifferences);
+  EXPECT_LT(largestDifference(byThreads[1], testing::centralDifferenceMatrix(s, 0.0, y, yp, 13.0)),
+            kDifferences);
 }
 
 }  // namespace
