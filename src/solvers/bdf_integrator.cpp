@@ -142,6 +142,8 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   highOrderBarredUntil_ = 0;
   stabilityBar_ = 0;
   stabilityLimitDetections_ = 0;
+  stepsSinceRoughSolve_ = std::numeric_limits<long>::max() / 2;
+  lastSolveAtNoise_ = false;
   heldLow_.clear();
   heldOwn_.clear();
   h_ = settings_.hinit > 0 ? settings_.hinit : 1e-3;
@@ -428,6 +430,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       refreshNext_ = true;
     if (converged) {
       if (atNoise) widenForNoise();
+      lastSolveAtNoise_ = atNoise;
       break;
     }
     if (jacobianCurrent_ || attempt == 1) {
@@ -522,6 +525,7 @@ bool BdfIntegrator::step(double tout) {
                   k_, t_, h, velocityRejected_ ? velocityError_ : err});
       if (newtonFailed) {
         ++stats_.newtonFailures;
+        stepsSinceRoughSolve_ = 0;
         h_ = 0.25 * h;
         jacobianCurrent_ = false;
       } else {
@@ -572,6 +576,7 @@ bool BdfIntegrator::step(double tout) {
     updateDivided();
     ++stats_.steps;
     ++stepsAtOrder_;
+    stepsSinceRoughSolve_ = lastSolveAtNoise_ ? 0 : stepsSinceRoughSolve_ + 1;
     jacobianCurrent_ = false;
 
     // Next order and step: compare the error estimates of orders k-1, k, k+1.
@@ -639,10 +644,17 @@ bool BdfIntegrator::step(double tout) {
       heldLow_.clear();
       heldOwn_.clear();
     }
+    // A corrector failure quarters the step whatever the error test says, and a solve accepted
+    // at its noise (A02's flat passages) leaves that noise in the divided differences of the
+    // next k + 1 steps, whose predictors extrapolate it and whose error tests then cut the
+    // step (estimates up to 3000x the true local error): such a step is no evidence of a
+    // stability limit (docs/integrators.md, "A rough solve is not a stability limit";
+    // dropping to order 2 for the bar there cost A02 7e-4 of its energy).
+    const bool historyHoldsRoughSolve = stepsSinceRoughSolve_ <= k_ + 1;
     if (!shortened) {
       if (k_ <= 2) {
         lowOrderStep_ = h;
-      } else if (h < kStabilityShrink * lowOrderStep_ || modeGrowing) {
+      } else if ((h < kStabilityShrink * lowOrderStep_ && !historyHoldsRoughSolve) || modeGrowing) {
         nextK = 2;
         // Back to order 2's step, which damps the grown mode (kept when growth was caught).
         ratio = modeGrowing ? 1.0 : lowOrderStep_ / h;

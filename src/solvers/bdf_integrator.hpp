@@ -104,6 +104,12 @@ class BdfIntegrator final : public Integrator {
   long highOrderBarredUntil_ = 0;
   long stabilityBar_ = 0;
   long stabilityLimitDetections_ = 0;
+  // Steps accepted since the last rough solve (a corrector failure, or a solve accepted by a
+  // stall rule at its noise): the shrink trigger skips the steps whose history still holds one
+  // (docs/integrators.md, "Order selection"). lastSolveAtNoise_: the last converged solve was
+  // accepted at noise.
+  long stepsSinceRoughSolve_ = 0;
+  bool lastSolveAtNoise_ = false;
   // Error estimates of orders k-1 and k over the run of steps taken at the current order with
   // one unchanged step size (oldest first; at most kGrowthWindow + 1 entries).
   std::deque<double> heldLow_, heldOwn_;
