@@ -3,11 +3,11 @@
 // on A02"). A measuring tool, not a test: nothing here is asserted.
 //
 // Usage: openmss-a02-local-error N END METHOD ERROR [STEPS_CSV [HMAX]]
-//   METHOD: GSTIFF, WSTIFF, SI2_GSTIFF, SI2_WSTIFF or MERSON. ERROR as on the INTEGRATOR
+//   METHOD: GSTIFF, WSTIFF, SI2_GSTIFF, SI2_WSTIFF, DSTIFF or MERSON. ERROR as on the INTEGRATOR
 //   statement. 400 output steps per 20 s (the benchmark's), so HMAX and HINIT are those of
 //   a02_table.py unless HMAX is given. MERSON's estimate column is its own error norm (its
 //   ERROR weights), not the BDF's, so its true / estimated ratios compare unlike things; its
-//   steps, energy errors and the fan are comparable.
+//   steps, energy errors and the fan are comparable. DSTIFF's is the norm IDA reports.
 //
 // The integrator is the one `openmss run` builds (analysis/integrator_factory.hpp) on the data
 // set `openmss-generate fourbar N`, stepped to the same output times. After every accepted step
@@ -246,7 +246,7 @@ void writeCsv(const char* path, const std::vector<StepRecord>& steps) {
 int main(int argc, char** argv) {
   if (argc < 5) {
     std::fprintf(stderr,
-                 "usage: %s N END GSTIFF|WSTIFF|SI2_GSTIFF|SI2_WSTIFF|MERSON ERROR "
+                 "usage: %s N END GSTIFF|WSTIFF|SI2_GSTIFF|SI2_WSTIFF|DSTIFF|MERSON ERROR "
                  "[STEPS_CSV [HMAX]]\n",
                  argv[0]);
     return 2;
@@ -279,6 +279,7 @@ int main(int argc, char** argv) {
   settings.type = method.find("WSTIFF") != std::string::npos ? model::IntegratorType::Wstiff
                                                              : model::IntegratorType::Gstiff;
   if (method == "MERSON") settings.type = model::IntegratorType::Merson;
+  if (method == "DSTIFF") settings.type = model::IntegratorType::Dstiff;
   if (method.rfind("SI2", 0) == 0) settings.formulation = model::IntegratorFormulation::Si2;
   settings.error = error;
   if (argc > 6) settings.hmax = std::atof(argv[6]);
