@@ -193,6 +193,8 @@ IntegratorPlan resolveIntegrator(const model::IntegratorSettings& s, double outp
   p.error = s.error.value_or(1e-3);
   p.maxit = s.maxit;
   p.modifiedCorrector = s.modifiedCorrector;
+  if (s.type == IntegratorType::Gstiff || s.type == IntegratorType::Wstiff)
+    p.adaptivity = s.adaptivity.value_or(0.0);
   // DSTIFF and ABAM (docs/integrators.md, "Defaults") have no step limit; nor has
   // MERSON (its steps land on the output times; docs/integrators.md, "MERSON").
   const bool dstiff = s.type == IntegratorType::Dstiff || s.type == IntegratorType::Abam ||
@@ -246,6 +248,10 @@ std::string integratorParameters(const IntegratorPlan& p) {
   if (p.type != IntegratorType::Merson) text += ", MAXIT = " + std::to_string(p.maxit);
   if (p.interpolate) text += ", INTERPOLATE = ON";
   if (p.modifiedCorrector) text += ", CORRECTOR = MODIFIED";
+  if (p.adaptivity > 0.0) {
+    std::snprintf(buf, sizeof buf, ", ADAPTIVITY = %.4g", p.adaptivity);
+    text += buf;
+  }
   return text;
 }
 
@@ -281,6 +287,7 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       s.fixedCoefficients = p.type == IntegratorType::Gstiff;
       s.patternGiven = p.patternGiven;
       s.modifiedCorrector = p.modifiedCorrector && isBdfFamily(p.type);
+      s.adaptivity = p.adaptivity;
       for (int j = 0; j < 10; ++j) s.pattern[j] = p.pattern[j];
       if (p.type == IntegratorType::Dstiff)
         inner = std::make_unique<solvers::IdaIntegrator>(*problem, s);

@@ -29,6 +29,7 @@ struct IntegratorPlan {
   bool patternGiven = false;
   bool pattern[10] = {};
   bool modifiedCorrector = false;  // CORRECTOR=MODIFIED (GSTIFF, WSTIFF)
+  double adaptivity = 0.0;         // ADAPTIVITY (GSTIFF, WSTIFF; 0: none)
 };
 
 // Why these settings cannot run here (nullopt when they can): a method without an

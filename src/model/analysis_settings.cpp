@@ -207,6 +207,8 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
       r.positive(a, settings.beta.emplace());
     } else if (a.name == "GAMMA") {
       r.positive(a, settings.gamma.emplace());
+    } else if (a.name == "ADAPTIVITY") {
+      r.positive(a, settings.adaptivity.emplace());
     } else if (a.name == "CORRECTOR") {
       // ORIGINAL: every differential unknown converges; MODIFIED: those of the error test
       // (docs/integrators.md, "Corrector"). ORIG_CONSTANT is ORIGINAL without ADAMS's
@@ -246,6 +248,15 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
             "Write CORRECTOR=ORIGINAL (or remove it), or choose GSTIFF, WSTIFF or HHT.");
     settings.modifiedCorrector = false;
   }
+  // ADAPTIVITY loosens the corrector of GSTIFF and WSTIFF (and CONSTANT_BDF) only, as ADAMS
+  // documents it (docs/integrators.md, "ADAPTIVITY"); the others run as without it, said so.
+  if (settings.adaptivity && settings.type != T::Gstiff && settings.type != T::Wstiff)
+    if (const language::Argument* a = s.find("ADAPTIVITY"))
+      diags.warning(a->where, s.subject(),
+                    std::string("ADAPTIVITY loosens the corrector of GSTIFF and WSTIFF only; it "
+                                "has no effect on ") +
+                        integratorTypeName(settings.type),
+                    "Remove ADAPTIVITY to silence this warning.");
   // MERSON is one explicit fourth-order formula without a corrector or a Jacobian: an order
   // limit or a Jacobian pattern would be silently meaningless, so they are refused.
   if (settings.type == T::Merson)

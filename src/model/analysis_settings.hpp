@@ -73,6 +73,7 @@ struct IntegratorSettings {
   double alpha = -0.3;                             // ALPHA (HHT)
   std::optional<double> beta, gamma;               // BETA, GAMMA (NEWMARK; HHT derives them)
   bool modifiedCorrector = false;                  // CORRECTOR=MODIFIED (GSTIFF, WSTIFF)
+  std::optional<double> adaptivity;                // ADAPTIVITY (GSTIFF, WSTIFF)
 };
 const char* integratorTypeName(IntegratorType type);  // "GSTIFF", "HHT", ...
 const char* formulationName(IntegratorFormulation f);  // "I3", "SI2", "SI1"

@@ -329,6 +329,9 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   };
   if (!haveJacobian_ || refreshNext_ || std::abs(cj / cjJacobian_ - 1.0) > kCjDrift) refresh();
 
+  // ADAPTIVITY / h added to the corrector's tolerance (ADAMS's definition; docs/integrators.md,
+  // "ADAPTIVITY"), in the weighted units of the convergence test below (ERROR (1 + |y|)).
+  const double loosened = settings_.adaptivity / (h * settings_.error);
   for (int attempt = 0; attempt < 2; ++attempt) {
     yNew_ = yPred_;
     // The rate is measured within the step: a rate carried over from the last step would let
@@ -394,7 +397,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
       // error, not to ERROR: HMAX-limited runs take steps whose local error is far below
       // ERROR, hundreds of thousands of them, and a corrector remainder (same sign step after
       // step) would add up over all of them; there the absolute bound governs, as before.
-      if (size <= kTightChange) {
+      if (size <= kTightChange + loosened) {
         converged = true;
         break;
       }
@@ -405,7 +408,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
         const double fromPredictor =
             ((yNew_ - yPred_).array() * correctorWeight_.array()).abs().maxCoeff();
         const double relative = kCorrectorShare * exactHistoryRatio * fromPredictor;
-        if (rate / (1.0 - rate) * size <= std::max(kTightChange, relative)) {
+        if (rate / (1.0 - rate) * size <= std::max(kTightChange, relative) + loosened) {
           converged = true;
           onRelativeTarget = relative > kTightChange;
           break;

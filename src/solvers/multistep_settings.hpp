@@ -30,6 +30,9 @@ struct MultistepSettings {
   // weighs only the unknowns of the integration error test (I3: the displacements), not every
   // differential unknown (ORIGINAL, the default).
   bool modifiedCorrector = false;
+  // ADAPTIVITY (docs/integrators.md, "ADAPTIVITY"): ADAPTIVITY / h added to the corrector's
+  // tolerance (BdfIntegrator only; 0: none).
+  double adaptivity = 0.0;
 };
 
 }  // namespace openmss::solvers
