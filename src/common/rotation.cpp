@@ -76,6 +76,23 @@ bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& 
   return true;
 }
 
+bool matrixFromAxisPointsUseX(const Eigen::Vector3d& origin, const Eigen::Vector3d& zPoint,
+                              const Eigen::Vector3d& xPoint, bool zGiven, Eigen::Matrix3d* a) {
+  Eigen::Vector3d x = xPoint - origin;
+  if (x.norm() < 1e-12) return false;
+  x.normalize();
+  // No z point: the reference z axis, or y when x is along z (as the x default above).
+  Eigen::Vector3d z = zGiven ? Eigen::Vector3d(zPoint - origin) : Eigen::Vector3d::UnitZ();
+  if (!zGiven && std::abs(x.dot(z)) > 0.999) z = Eigen::Vector3d::UnitY();
+  z -= x * x.dot(z);
+  if (z.norm() < 1e-12) return false;
+  z.normalize();
+  a->col(0) = x;
+  a->col(1) = z.cross(x);
+  a->col(2) = z;
+  return true;
+}
+
 Eigen::Vector3d bodyFixedAngles(const Eigen::Matrix3d& r, int i, int j, int k) {
   if (i == k) {
     // Proper Euler sequence i-j-i; `o` is the third axis, eps the parity of (i, j, o).

@@ -32,6 +32,10 @@ bool orientBodySequence(int code, int component, int* first, int* second, int* t
 bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& zPoint,
                           const Eigen::Vector3d& xPoint, bool zGiven, bool xGiven,
                           Eigen::Matrix3d* a);
+// The same with USEXP (MARKER): x exactly along (xPoint - origin), zPoint only fixing the x-z
+// plane (z toward it, made orthogonal to x; the reference z axis when no zPoint is given).
+bool matrixFromAxisPointsUseX(const Eigen::Vector3d& origin, const Eigen::Vector3d& zPoint,
+                              const Eigen::Vector3d& xPoint, bool zGiven, Eigen::Matrix3d* a);
 
 // Unit quaternion (e0, e1, e2, e3) with e0 >= 0 of a rotation matrix (Shepperd's method).
 Eigen::Vector4d quaternionFromMatrix(const Eigen::Matrix3d& a);

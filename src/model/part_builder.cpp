@@ -12,14 +12,27 @@ namespace {
 using language::Argument;
 using language::Statement;
 
-// Orientation from REULER or ZP/XP (in the reference frame), with the position origin.
+// Orientation from REULER or ZP/XP (in the reference frame), with the position origin; with
+// USEXP (MARKER) x lies exactly toward XP and ZP only fixes the x-z plane (docs/language.md,
+// "MARKER").
 Eigen::Matrix3d orientationOf(StatementArguments& a, const char* zName, const char* xName,
-                              const Eigen::Vector3d& origin) {
+                              const Eigen::Vector3d& origin, bool useX = false) {
   if (auto e = a.vec3("REULER")) return matrixFromEuler313((*e)(0), (*e)(1), (*e)(2));
   auto z = a.vec3(zName);
   auto x = a.vec3(xName);
   if (!z && !x) return Eigen::Matrix3d::Identity();
   Eigen::Matrix3d m;
+  if (useX && x) {
+    if (!matrixFromAxisPointsUseX(origin, z.value_or(origin), *x, z.has_value(), &m)) {
+      a.error(a.statement().where,
+              std::string("with USEXP the ") + xName + "/" + zName +
+                  " points do not define a frame (a point coincides with the origin, or the z "
+                  "point lies on the x axis)",
+              "Move the points so that x is along the origin->XP line and ZP is off that line.");
+      return Eigen::Matrix3d::Identity();
+    }
+    return m;
+  }
   if (!matrixFromAxisPoints(origin, z.value_or(origin), x.value_or(origin), z.has_value(),
                             x.has_value(), &m)) {
     a.error(a.statement().where,
@@ -74,13 +87,21 @@ void PartBuilder::readMarker(const Statement& s, Diagnostics& diags) {
     return;
   }
   // FLOATING markers are read; only a JFLOAT argument may name one (markerReference).
-  for (const char* unsupported :
-       {"POINT_MASS", "FLEX_BODY", "NODE", "FE_PART", "NODE_LABEL", "USEXP"})
+  for (const char* unsupported : {"POINT_MASS", "FLEX_BODY", "NODE", "FE_PART", "NODE_LABEL"})
     if (a.has(unsupported))
       a.error(*s.find(unsupported), std::string(unsupported) + " markers are not supported yet",
               "Use a fixed marker on a rigid PART.");
+  // USEXP qualifies XP; without XP (or with REULER, which sets the frame alone) it has no
+  // meaning, which is said rather than ignored.
+  const bool useX = a.has("USEXP");
+  if (useX && (!a.has("XP") || a.has("REULER")))
+    a.error(*s.find("USEXP"),
+            a.has("REULER") ? "USEXP qualifies XP and ZP; REULER sets the frame alone"
+                            : "USEXP makes XP the exact x axis, and no XP is given",
+            a.has("REULER") ? "Remove USEXP (or give the frame by XP, ZP, USEXP instead)."
+                            : "Give XP=x,y,z, or remove USEXP.");
   m.qp = a.vec3("QP").value_or(Eigen::Vector3d::Zero());
-  m.a = orientationOf(a, "ZP", "XP", m.qp);
+  m.a = orientationOf(a, "ZP", "XP", m.qp, useX);
   m.rm = a.id("RM");
   markers_.push_back(m);
 }

@@ -85,6 +85,52 @@ TEST(PartBuilder, MarkerFramesFromQpReulerAxisPointsAndRm) {
   EXPECT_LT((b.marker(23).orientation - rx90()).norm(), kTol);
 }
 
+// USEXP (docs/language.md, "MARKER"): x exactly toward XP, ZP only fixing the x-z plane.
+// Truth by hand: XP = (1,1,0), ZP = (0,1,0) from the origin. With USEXP x = (1,1,0)/sqrt2,
+// z = (0,1,0) minus its x part = (-1,1,0)/sqrt2, y = z x x = (0,0,-1). Without it z = (0,1,0)
+// exactly, x = (1,1,0) minus its z part = (1,0,0), y = (0,0,-1).
+TEST(PartBuilder, UsexpMakesXpTheExactXAxis) {
+  const Built b = build(std::string(kHeader) +
+                        "PART/2, MASS=2, CM=20, IP=1,1,1\n"
+                        "MARKER/20, PART=2\n"
+                        "MARKER/24, PART=2, ZP=0,1,0, XP=1,1,0, USEXP\n"
+                        "MARKER/25, PART=2, ZP=0,1,0, XP=1,1,0\n"
+                        "MARKER/26, PART=2, XP=0,0,2, USEXP\n"
+                        "END\n");
+  ASSERT_TRUE(b.ok) << ::testing::PrintToString(b.messages());
+  const double r = std::sqrt(0.5);
+  Eigen::Matrix3d with, without, alongZ;
+  with << r, 0, -r, r, 0, r, 0, -1, 0;
+  without << 1, 0, 0, 0, 0, 1, 0, -1, 0;
+  // XP along the reference z and no ZP: z falls back to the reference y (as x falls back to
+  // the reference y without XP when ZP is along x): x = (0,0,1), z = (0,1,0), y = (1,0,0).
+  alongZ << 0, 1, 0, 0, 0, 1, 1, 0, 0;
+  EXPECT_LT((b.marker(24).orientation - with).norm(), kTol) << b.marker(24).orientation;
+  EXPECT_LT((b.marker(25).orientation - without).norm(), kTol) << b.marker(25).orientation;
+  EXPECT_LT((b.marker(26).orientation - alongZ).norm(), kTol) << b.marker(26).orientation;
+}
+
+TEST(PartBuilder, UsexpWithoutXpWithReulerOrDegenerateIsLocated) {
+  const Built b = build(std::string(kHeader) +
+                        "PART/2, MASS=2, CM=20, IP=1,1,1\n"
+                        "MARKER/20, PART=2\n"
+                        "MARKER/21, PART=2, ZP=0,1,0, USEXP\n"
+                        "MARKER/22, PART=2, REULER=0,0,0, XP=1,0,0, USEXP\n"
+                        "MARKER/23, PART=2, ZP=2,0,0, XP=1,0,0, USEXP\n"
+                        "END\n");
+  EXPECT_FALSE(b.ok);
+  EXPECT_EQ(
+      b.messages(),
+      (std::vector<std::string>{
+          "p.adm:7:30: error: MARKER/21: USEXP makes XP the exact x axis, and no XP is given. "
+          "Give XP=x,y,z, or remove USEXP.",
+          "p.adm:8:44: error: MARKER/22: USEXP qualifies XP and ZP; REULER sets the frame "
+          "alone. Remove USEXP (or give the frame by XP, ZP, USEXP instead).",
+          "p.adm:9:1: error: MARKER/23: with USEXP the XP/ZP points do not define a frame (a "
+          "point coincides with the origin, or the z point lies on the x axis). Move the points "
+          "so that x is along the origin->XP line and ZP is off that line."}));
+}
+
 TEST(PartBuilder, BodyFrameIsTheCmMarkerAndMarkersAreRelativeToIt) {
   // The CM marker is off the BCS origin and turned: every marker of the part is then stored
   // relative to it, and its ground pose is unchanged.
