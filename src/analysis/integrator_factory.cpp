@@ -282,6 +282,7 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       s.patternGiven = p.patternGiven;
       s.modifiedCorrector = p.modifiedCorrector && isBdfFamily(p.type);
       for (int j = 0; j < 10; ++j) s.pattern[j] = p.pattern[j];
+      s.pivotOrder = p.pivotOrder;
       if (p.type == IntegratorType::Dstiff)
         inner = std::make_unique<solvers::IdaIntegrator>(*problem, s);
       else

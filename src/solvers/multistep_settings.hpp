@@ -7,6 +7,8 @@
 
 #include <limits>
 
+#include "solvers/pivot_order.hpp"
+
 namespace openmss::solvers {
 
 struct MultistepSettings {
@@ -30,6 +32,8 @@ struct MultistepSettings {
   // weighs only the unknowns of the integration error test (I3: the displacements), not every
   // differential unknown (ORIGINAL, the default).
   bool modifiedCorrector = false;
+  // KLU's pivot order on the sparse path (solvers/pivot_order.hpp; tests and benches only).
+  PivotOrder pivotOrder = PivotOrder::Default;
 };
 
 }  // namespace openmss::solvers
