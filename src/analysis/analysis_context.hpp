@@ -8,11 +8,12 @@
 #include <string>
 
 #include "analysis/run_report.hpp"
-#include "output/output_frame.hpp"
 #include "analysis/run_state.hpp"
 #include "common/source_location.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model.hpp"
+#include "output/output_frame.hpp"
+#include "solvers/pivot_order.hpp"
 
 namespace openmss::analysis {
 
@@ -28,6 +29,9 @@ struct AnalysisContext {
   mechanics::MultibodySystem& system;
   RunState& state;
   RunReport& report;
+  // KLU's pivot order for the multistep integrators' sparse Newton matrices: the default
+  // except where a test or bench asks for another (solvers/pivot_order.hpp).
+  solvers::PivotOrder pivotOrder = solvers::PivotOrder::Default;
 
   // An error or warning located at `origin`, or at the model's file when `origin` is null.
   void error(const RunOrigin* origin, std::string message, std::string hint = {}) const;

@@ -69,7 +69,8 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
               "Change the INTEGRATOR setting.");
     return false;
   }
-  const IntegratorPlan plan = resolveIntegrator(m.integrator, outStep);
+  IntegratorPlan plan = resolveIntegrator(m.integrator, outStep);
+  plan.pivotOrder = run.pivotOrder;
   writeBanner(run, plan);
   MultibodyDae dae(run.system);
   const std::unique_ptr<solvers::Integrator> method = makeIntegrator(plan, run.system, dae, end);

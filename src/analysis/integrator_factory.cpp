@@ -289,6 +289,7 @@ std::unique_ptr<solvers::Integrator> makeIntegrator(const IntegratorPlan& p,
       s.modifiedCorrector = p.modifiedCorrector && isBdfFamily(p.type);
       s.adaptivity = p.adaptivity;
       for (int j = 0; j < 10; ++j) s.pattern[j] = p.pattern[j];
+      s.pivotOrder = p.pivotOrder;
       if (p.type == IntegratorType::Dstiff)
         inner = std::make_unique<solvers::IdaIntegrator>(*problem, s);
       else

@@ -15,6 +15,7 @@
 #include "model/analysis_settings.hpp"
 #include "solvers/dae_problem.hpp"
 #include "solvers/integrator.hpp"
+#include "solvers/pivot_order.hpp"
 
 namespace openmss::analysis {
 
@@ -30,6 +31,9 @@ struct IntegratorPlan {
   bool pattern[10] = {};
   bool modifiedCorrector = false;  // CORRECTOR=MODIFIED (GSTIFF, WSTIFF)
   double adaptivity = 0.0;         // ADAPTIVITY (GSTIFF, WSTIFF; 0: none)
+  // Not from the settings: the run's pivot order (AnalysisContext::pivotOrder), GSTIFF,
+  // WSTIFF and DSTIFF.
+  solvers::PivotOrder pivotOrder = solvers::PivotOrder::Default;
 };
 
 // Why these settings cannot run here (nullopt when they can): a method without an

@@ -28,6 +28,7 @@
 #include "model/model_builder.hpp"
 #include "model/releasing_build.hpp"
 #include "model/results_arguments.hpp"
+#include "solvers/pivot_order.hpp"
 #include "user/element_routine.hpp"
 #include "user/user_library.hpp"
 
@@ -78,7 +79,10 @@ constexpr const char* kRunHelp =
     "--set STATEMENT/id.ARGUMENT=value (repeatable) changes one argument of the data set as\n"
     "  read, e.g. --set SPRINGDAMPER/3.K=12.5, --set VARIABLE/7.FUNCTION=2*TIME,\n"
     "  --set ACCGRAV.JGRAV=-9.81; the value is read as in a data set (docs/studies.md).\n"
-    "  An unknown statement, id or argument is an input error (exit 1).\n";
+    "  An unknown statement, id or argument is an input error (exit 1).\n"
+    "--pivot-order default|nobtf|colamd (diagnostics) changes KLU's pivot order for GSTIFF,\n"
+    "  WSTIFF and DSTIFF: results then differ by round-off, which shows how sensitive a run\n"
+    "  is to it (docs/integrators.md, \"A second failure at a flat passage\").\n";
 
 constexpr const char* kCheckHelp =
     "openmss check FILE.adm [--user-library LIB]\n"
@@ -128,10 +132,22 @@ int printSummary(const commands::Session& s, bool ok) {
   return 0;
 }
 
+// `openmss run --pivot-order NAME` (diagnostics): KLU's pivot order, for tests and benches
+// (solvers/pivot_order.hpp). An unknown name ends the program, as a missing value does.
+solvers::PivotOrder readPivotOrder(const std::string& name) {
+  if (name == "default") return solvers::PivotOrder::Default;
+  if (name == "nobtf") return solvers::PivotOrder::NoBtf;
+  if (name == "colamd") return solvers::PivotOrder::Colamd;
+  std::fprintf(stderr, "openmss run: --pivot-order is default, nobtf or colamd, not %s\n",
+               name.c_str());
+  std::exit(64);
+}
+
 int runCommandFile(const std::string& path, const std::string& outdir, bool quiet,
-                   const std::vector<std::string>& overrides) {
+                   const std::vector<std::string>& overrides, solvers::PivotOrder pivotOrder) {
   commands::SessionOptions opt;
   opt.overrides = overrides;
+  opt.pivotOrder = pivotOrder;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
   commands::Session session(opt);
@@ -144,9 +160,11 @@ int runCommandFile(const std::string& path, const std::string& outdir, bool quie
 }
 
 int runModel(const std::string& path, double end, long steps, double dtout,
-             const std::string& outdir, bool quiet, const std::vector<std::string>& overrides) {
+             const std::string& outdir, bool quiet, const std::vector<std::string>& overrides,
+             solvers::PivotOrder pivotOrder) {
   commands::SessionOptions opt;
   opt.overrides = overrides;
+  opt.pivotOrder = pivotOrder;
   opt.outputDirectory = outdir;
   opt.progress = !quiet && isatty(STDERR_FILENO);
   commands::Session session(opt);
@@ -294,6 +312,7 @@ int main(int argc, char** argv) {
     long steps = 100;
     bool quiet = false;
     std::vector<std::string> overrides;
+    solvers::PivotOrder pivotOrder = solvers::PivotOrder::Default;
     for (int i = 2; i < argc; ++i) {
       std::string a = argv[i];
       auto next = [&]() -> const char* {
@@ -309,6 +328,8 @@ int main(int argc, char** argv) {
       else if (a == "--dtout") dtout = std::atof(next());
       else if (a == "--quiet") quiet = true;
       else if (a == "--set") overrides.push_back(next());
+      else if (a == "--pivot-order")
+        pivotOrder = readPivotOrder(next());
       else if (a == "--user-library") user::setDefaultLibrary(fs::absolute(next()).string());
       else if (a.starts_with("--")) {
         std::fprintf(stderr, "openmss run: unknown option %s\n%s", a.c_str(), kRunHelp);
@@ -323,9 +344,10 @@ int main(int argc, char** argv) {
       return 1;
     }
     const std::string ext = fs::path(file).extension().string();
-    const int status = ext == ".acf" || ext == ".ACF"
-                           ? runCommandFile(file, outdir, quiet, overrides)
-                           : runModel(file, end, steps, dtout, outdir, quiet, overrides);
+    const int status =
+        ext == ".acf" || ext == ".ACF"
+            ? runCommandFile(file, outdir, quiet, overrides, pivotOrder)
+            : runModel(file, end, steps, dtout, outdir, quiet, overrides, pivotOrder);
     // A user subroutine that stopped the run (NaN, ERRMES STOP, a crash) is named last
     // (docs/user-subroutines.md, "Bad user code").
     if (const std::string fatal = user::firstUserFatal(); status != 0 && !fatal.empty()) {

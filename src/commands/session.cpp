@@ -51,7 +51,7 @@ const analysis::RunSummary& Session::summary() const {
 }
 
 analysis::AnalysisContext Session::context() {
-  return analysis::AnalysisContext{*model_, *system_, *state_, *this};
+  return analysis::AnalysisContext{*model_, *system_, *state_, *this, options_.pivotOrder};
 }
 
 void Session::diagnostic(const Diagnostic& d) {

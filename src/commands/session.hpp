@@ -27,6 +27,7 @@
 #include "output/results_file.hpp"
 #include "output/results_formatted_file.hpp"
 #include "output/tabular_file.hpp"
+#include "solvers/pivot_order.hpp"
 
 namespace openmss::commands {
 
@@ -42,6 +43,9 @@ struct SessionOptions {
   // `openmss run … --set STATEMENT/id.ARGUMENT=value`: laid over every data set loaded
   // (dataset_overrides.hpp).
   std::vector<std::string> overrides;
+  // `openmss run … --pivot-order NAME` (diagnostics): KLU's pivot order for the multistep
+  // integrators, for tests and benches only (solvers/pivot_order.hpp).
+  solvers::PivotOrder pivotOrder = solvers::PivotOrder::Default;
 };
 
 class Session final : private analysis::RunReport {

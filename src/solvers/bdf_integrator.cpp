@@ -125,6 +125,8 @@ using bdf::lagrangeAt;
 BdfIntegrator::BdfIntegrator(DaeProblem& problem, const MultistepSettings& settings)
     : problem_(problem), settings_(settings) {
   settings_.kmax = std::clamp(settings_.kmax, 1, 6);
+  if (settings_.pivotOrder != PivotOrder::Default)
+    sparseSolver_.setKluOptions(KluLinearSolver::optionsFor(settings_.pivotOrder));
 }
 
 void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::VectorXd& yp0) {

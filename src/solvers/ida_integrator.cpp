@@ -452,6 +452,8 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   e.sparse = problem_.sparse() && n >= BdfIntegrator::kSparseThreshold;
   if (e.sparse) {
     e.sparseJac = *problem_.pattern();
+    if (settings_.pivotOrder != PivotOrder::Default)
+      e.klu.setOptions(KluLinearSolver::optionsFor(settings_.pivotOrder));
     e.klu.analyze(e.sparseJac);
     e.matrix = SUNSparseMatrix(n, n, 1, CSC_MAT, e.context);
   } else {

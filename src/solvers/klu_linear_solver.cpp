@@ -44,6 +44,13 @@ void KluLinearSolver::setOptions(const Options& options) {
   rowIndex_.clear();
 }
 
+KluLinearSolver::Options KluLinearSolver::optionsFor(PivotOrder order) {
+  Options o;
+  if (order == PivotOrder::NoBtf) o.btf = false;
+  if (order == PivotOrder::Colamd) o.ordering = 1;
+  return o;
+}
+
 void KluLinearSolver::release() {
   if (impl_->numeric) klu_free_numeric(&impl_->numeric, &impl_->common);
   if (impl_->symbolic) klu_free_symbolic(&impl_->symbolic, &impl_->common);

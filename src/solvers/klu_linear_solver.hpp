@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "solvers/linear_solver.hpp"
+#include "solvers/pivot_order.hpp"
 
 namespace openmss::solvers {
 
@@ -52,6 +53,8 @@ class KluLinearSolver final : public LinearSolver {
     double maxWork = 30.0;
   };
   void setOptions(const Options& options);
+  // The options of a pivot order (solvers/pivot_order.hpp): Default is Options{}.
+  static Options optionsFor(PivotOrder order);
 
  private:
   bool samePattern(const Eigen::SparseMatrix<double>& m) const;

@@ -7,6 +7,8 @@
 
 #include <limits>
 
+#include "solvers/pivot_order.hpp"
+
 namespace openmss::solvers {
 
 struct MultistepSettings {
@@ -33,6 +35,8 @@ struct MultistepSettings {
   // ADAPTIVITY (docs/integrators.md, "ADAPTIVITY"): ADAPTIVITY / h added to the corrector's
   // tolerance (BdfIntegrator only; 0: none).
   double adaptivity = 0.0;
+  // KLU's pivot order on the sparse path (solvers/pivot_order.hpp; tests and benches only).
+  PivotOrder pivotOrder = PivotOrder::Default;
 };
 
 }  // namespace openmss::solvers

@@ -28,6 +28,8 @@ class SparseLinearSolver final : public LinearSolver {
 
   // The threshold of the next analyses (tests force either solver with 0 or infinity).
   void setSupernodalFlops(double flops) { supernodalFlops_ = flops; }
+  // KLU's options for the next analyses (MultistepSettings::pivotOrder).
+  void setKluOptions(const KluLinearSolver::Options& options) { klu_.setOptions(options); }
 
   bool supernodal() const { return active_ == &supernodal_; }
   // KLU's prediction for the last analysed pattern (0 before any).

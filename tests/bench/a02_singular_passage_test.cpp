@@ -117,14 +117,16 @@ struct Outcome {
   int flatPassages = 0;  // sign changes of B0's y along the run
   double largestError = INFINITY;
   double endError = INFINITY;  // at t = END, one of the benchmark's times (10 and 20 s)
+  std::string request;         // the request file's text
 };
 
+// `options` are further arguments of `openmss run` (--pivot-order).
 Outcome runA02(const std::string& integrator, double error, int windows = kWindows,
-               double end = kEnd, int outputSteps = kOutputSteps) {
+               double end = kEnd, int outputSteps = kOutputSteps, const std::string& options = "") {
   const fs::path dir = scratch("a02");
   write(dir / "a02.adm", fourBarChainAdm(windows));
   write(dir / "a02.acf", chainAcf("a02.adm", "a02", end, outputSteps, error, integrator));
-  const Result r = run("run a02.acf", dir);
+  const Result r = run("run a02.acf" + options, dir);
   Outcome o;
   o.status = r.status;
   o.output = r.output;
@@ -141,6 +143,7 @@ Outcome runA02(const std::string& integrator, double error, int windows = kWindo
   }
   if (!sim.empty() && std::abs(sim.back().t - end) < 1e-9)
     o.endError = std::hypot(sim.back().x - exact.back().x, sim.back().y - exact.back().y);
+  o.request = openmss::testing::slurp(dir / "a02.req");
   fs::remove_all(dir);
   return o;
 }
@@ -219,6 +222,35 @@ TEST(A02SingularPassage, DstiffPassesFortyWindowsAtTightError) {
 // CPU). Bound 1e-5 m, 1000 ERROR, two decades under the benchmark's 1e-3 m.
 TEST(A02SingularPassage, GstiffSi2PassesFortyWindowsAtTightError) {
   expectPassesAtTightError("SI2_GSTIFF", "SI2 GSTIFF", 40, 7.0, 140, 7, 1e-5);
+}
+// KLU's pivot order (`openmss run --pivot-order`, solvers/pivot_order.hpp) changes only the
+// round-off. At N = 4 the CI rows hold on every order; measured largest B0 error over the 201
+// outputs (default / no BTF / COLAMD): SI2 GSTIFF at 1e-6 9.1e-4 / 3.8e-4 / 3.8e-4 m, DSTIFF at
+// 1e-8 4.3e-6 / 1.4e-5 / 9.0e-6 m. Bounds: the benchmark's 1e-3 m for SI2 GSTIFF (2.6x room on
+// the other orders) and 1e-4 m, a decade under it, for DSTIFF (7x room). The request files
+// differ from the default order's, so the setting reaches the solver and is not ignored. At
+// N = 40 the flat passages are not crossed robustly on every order (docs/validation.md, "The
+// flat passages are crossed partly on round-off luck"): not asserted there.
+TEST(A02SingularPassage, CiRowsHoldOnOtherPivotOrders) {
+  const std::string si2Default = runA02("SI2_GSTIFF", 1e-6).request;
+  const std::string dstiffDefault = runA02("DSTIFF", 1e-8).request;
+  for (const char* order : {"nobtf", "colamd"}) {
+    SCOPED_TRACE(order);
+    const std::string option = std::string(" --pivot-order ") + order;
+    const Outcome si2 = runA02("SI2_GSTIFF", 1e-6, kWindows, kEnd, kOutputSteps, option);
+    EXPECT_EQ(si2.status, 0) << si2.output;
+    EXPECT_EQ(si2.samples, kOutputSteps + 1) << si2.output;
+    EXPECT_EQ(si2.flatPassages, 10);
+    EXPECT_LT(si2.largestError, kBenchmarkTolerance);
+    EXPECT_NE(si2.request, si2Default);
+    const Outcome dstiff = runA02("DSTIFF", 1e-8, kWindows, kEnd, kOutputSteps, option);
+    EXPECT_EQ(dstiff.status, 0) << dstiff.output;
+    EXPECT_EQ(dstiff.samples, kOutputSteps + 1) << dstiff.output;
+    EXPECT_LT(dstiff.largestError, 1e-4);
+    EXPECT_NE(dstiff.request, dstiffDefault);
+    std::printf("A02 N=%d pivot order %s: SI2 GSTIFF 1e-6 largest %.2e m, DSTIFF 1e-8 %.2e m\n",
+                kWindows, order, si2.largestError, dstiff.largestError);
+  }
 }
 TEST(A02SingularPassage, MersonAtTheLoosestAndTightestError) {
   expectWithinBenchmark("MERSON", 1e-4);
