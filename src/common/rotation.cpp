@@ -50,6 +50,30 @@ Eigen::Vector3d euler313FromMatrix(const Eigen::Matrix3d& a) {
   return {std::atan2(a(0, 2), -a(1, 2)), theta, std::atan2(a(2, 0), a(2, 1))};
 }
 
+namespace {
+
+// The default toward-point direction of an axis-point frame whose point is missing: the
+// reference axis `preferred`, or y when the exact axis lies along it (documented choice).
+Eigen::Vector3d defaultPlaneAxis(const Eigen::Vector3d& exact, const Eigen::Vector3d& preferred) {
+  return std::abs(exact.dot(preferred)) > 0.999 ? Eigen::Vector3d::UnitY() : preferred;
+}
+
+// `plane` made orthogonal to the unit `exact` axis and normalised; false when it lies along it.
+bool orthogonalise(const Eigen::Vector3d& exact, Eigen::Vector3d& plane) {
+  plane -= exact * exact.dot(plane);
+  if (plane.norm() < 1e-12) return false;
+  plane.normalize();
+  return true;
+}
+
+void setAxes(const Eigen::Vector3d& x, const Eigen::Vector3d& z, Eigen::Matrix3d* a) {
+  a->col(0) = x;
+  a->col(1) = z.cross(x);
+  a->col(2) = z;
+}
+
+}  // namespace
+
 bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& zPoint,
                           const Eigen::Vector3d& xPoint, bool zGiven, bool xGiven,
                           Eigen::Matrix3d* a) {
@@ -59,20 +83,10 @@ bool matrixFromAxisPoints(const Eigen::Vector3d& origin, const Eigen::Vector3d& 
     if (z.norm() < 1e-12) return false;
     z.normalize();
   }
-  Eigen::Vector3d x;
-  if (xGiven) {
-    x = xPoint - origin;
-  } else {
-    // No x point: take the reference x axis, or y when z is along x (documented choice).
-    x = Eigen::Vector3d::UnitX();
-    if (std::abs(z.dot(x)) > 0.999) x = Eigen::Vector3d::UnitY();
-  }
-  x -= z * z.dot(x);
-  if (x.norm() < 1e-12) return false;
-  x.normalize();
-  a->col(0) = x;
-  a->col(1) = z.cross(x);
-  a->col(2) = z;
+  Eigen::Vector3d x =
+      xGiven ? Eigen::Vector3d(xPoint - origin) : defaultPlaneAxis(z, Eigen::Vector3d::UnitX());
+  if (!orthogonalise(z, x)) return false;
+  setAxes(x, z, a);
   return true;
 }
 
@@ -81,15 +95,10 @@ bool matrixFromAxisPointsUseX(const Eigen::Vector3d& origin, const Eigen::Vector
   Eigen::Vector3d x = xPoint - origin;
   if (x.norm() < 1e-12) return false;
   x.normalize();
-  // No z point: the reference z axis, or y when x is along z (as the x default above).
-  Eigen::Vector3d z = zGiven ? Eigen::Vector3d(zPoint - origin) : Eigen::Vector3d::UnitZ();
-  if (!zGiven && std::abs(x.dot(z)) > 0.999) z = Eigen::Vector3d::UnitY();
-  z -= x * x.dot(z);
-  if (z.norm() < 1e-12) return false;
-  z.normalize();
-  a->col(0) = x;
-  a->col(1) = z.cross(x);
-  a->col(2) = z;
+  Eigen::Vector3d z =
+      zGiven ? Eigen::Vector3d(zPoint - origin) : defaultPlaneAxis(x, Eigen::Vector3d::UnitZ());
+  if (!orthogonalise(x, z)) return false;
+  setAxes(x, z, a);
   return true;
 }
 

@@ -19,11 +19,9 @@
 
 #include "analysis/integrator_factory.hpp"
 #include "analysis/multibody_dae.hpp"
-#include "language/reader.hpp"
-#include "mechanics/initial_conditions.hpp"
-#include "model/model_builder.hpp"
 #include "model_generators.hpp"
 #include "solvers/integrator.hpp"
+#include "support/integrator_test_models.hpp"
 
 namespace {
 
@@ -46,20 +44,9 @@ struct LowOrderSteps {
 };
 
 TEST(A02OrderBar, FlatPassagesAreNotTakenForAStabilityLimit) {
-  language::Dataset ds;
-  Diagnostics diags;
-  language::readDatasetText(bench::fourBarChainAdm(kWindows), "a02.adm", ds, diags);
-  model::Model model;
-  ASSERT_TRUE(model::buildModel(ds, model, diags));
-  mechanics::MultibodySystem system(model);
-  Eigen::VectorXd y = system.initialState(), yp;
-  mechanics::removeRedundantConstraints(system, y);
-  mechanics::AssemblyOptions assembly;
-  assembly.honourExact = true;
-  assembly.holdJointInitialConditions = true;
-  mechanics::assemblePositions(system, 0.0, y, assembly);
-  mechanics::solveVelocities(system, 0.0, y, true);
-  mechanics::solveAccelerations(system, 0.0, y, yp);
+  const auto mechanism = test::assemble(bench::fourBarChainAdm(kWindows));
+  const mechanics::MultibodySystem& system = *mechanism->system;
+  const Eigen::VectorXd& y = mechanism->y;
 
   model::IntegratorSettings settings;
   settings.type = model::IntegratorType::Gstiff;
@@ -70,7 +57,7 @@ TEST(A02OrderBar, FlatPassagesAreNotTakenForAStabilityLimit) {
   auto integrator = analysis::makeIntegrator(plan, system, dae, kEnd);
   LowOrderSteps lowOrder;
   integrator->setStepObserver(&LowOrderSteps::onStep, &lowOrder);
-  integrator->start(0.0, y, yp);
+  integrator->start(0.0, y, mechanism->yp);
 
   // The first rocker's angle rate from its centre about its pivot (the bench tool's reading).
   const int r0 = system.layout().body(0);

@@ -20,7 +20,6 @@
 #include <string>
 
 #include "analysis/integrator_factory.hpp"
-#include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
@@ -34,24 +33,16 @@ constexpr double kX1 = test::kPendulumX1;
 constexpr double kY1 = test::kPendulumY1;
 constexpr double kLocalError = 1e-6;
 
-struct Outcome {
-  double x = 0, y = 0;
-  long steps = 0, residuals = 0;
-};
+using Outcome = test::PendulumOutcome;
 
 Outcome integrate(bool fixedCoefficients, double adaptivity) {
-  const auto mechanism = test::assemble(kPendulum);
-  MultibodyDae dae(*mechanism->system);
   solvers::MultistepSettings settings;
   settings.error = kLocalError;
   settings.hmax = 0.1;
   settings.hinit = 1e-4;
   settings.fixedCoefficients = fixedCoefficients;
   settings.adaptivity = adaptivity;
-  solvers::BdfIntegrator bdf(dae, settings);
-  bdf.start(0.0, mechanism->y, mechanism->yp);
-  EXPECT_TRUE(bdf.advanceTo(1.0)) << bdf.failure().reason;
-  return {bdf.y()(0), bdf.y()(1), bdf.statistics().steps, bdf.statistics().residualEvaluations};
+  return test::integratePendulum(settings);
 }
 
 double perStep(const Outcome& o) {

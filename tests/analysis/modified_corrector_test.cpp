@@ -20,7 +20,6 @@
 #include <cstdio>
 #include <string>
 
-#include "analysis/multibody_dae.hpp"
 #include "language/reader.hpp"
 #include "model/model_builder.hpp"
 #include "solvers/bdf_integrator.hpp"
@@ -33,26 +32,16 @@ using test::kPendulum;
 constexpr double kX1 = test::kPendulumX1;
 constexpr double kY1 = test::kPendulumY1;
 
-struct Outcome {
-  double x = 0, y = 0;
-  long steps = 0, residuals = 0;
-};
+using Outcome = test::PendulumOutcome;
 
 Outcome integrate(double error, bool fixedCoefficients, bool modified) {
-  const auto mechanism = test::assemble(kPendulum);
-  const Eigen::VectorXd& y = mechanism->y;
-  const Eigen::VectorXd& yp = mechanism->yp;
-  MultibodyDae dae(*mechanism->system);
   solvers::MultistepSettings settings;
   settings.error = error;
   settings.hmax = 0.1;
   settings.hinit = 1e-4;
   settings.fixedCoefficients = fixedCoefficients;
   settings.modifiedCorrector = modified;
-  solvers::BdfIntegrator bdf(dae, settings);
-  bdf.start(0.0, y, yp);
-  EXPECT_TRUE(bdf.advanceTo(1.0)) << bdf.failure().reason;
-  return {bdf.y()(0), bdf.y()(1), bdf.statistics().steps, bdf.statistics().residualEvaluations};
+  return test::integratePendulum(settings);
 }
 
 TEST(ModifiedCorrector, AgreesWithOriginalAndTheReferenceAtTightError) {

@@ -7,11 +7,13 @@
 #include <memory>
 #include <string>
 
+#include "analysis/multibody_dae.hpp"
 #include "common/diagnostics.hpp"
 #include "language/reader.hpp"
 #include "mechanics/initial_conditions.hpp"
 #include "mechanics/multibody_system.hpp"
 #include "model/model_builder.hpp"
+#include "solvers/bdf_integrator.hpp"
 
 namespace openmss::test {
 
@@ -90,6 +92,22 @@ inline std::unique_ptr<Mechanism> assemble(const std::string& text) {
   mechanics::solveVelocities(*m->system, 0.0, m->y);
   EXPECT_TRUE(mechanics::solveAccelerations(*m->system, 0.0, m->y, m->yp));
   return m;
+}
+
+// The DAE test-set pendulum integrated to t = 1 by BdfIntegrator with `settings`: its position
+// there, the steps and the residual evaluations (the runs of the corrector tests).
+struct PendulumOutcome {
+  double x = 0, y = 0;
+  long steps = 0, residuals = 0;
+};
+
+inline PendulumOutcome integratePendulum(const solvers::MultistepSettings& settings) {
+  const auto mechanism = assemble(kPendulum);
+  analysis::MultibodyDae dae(*mechanism->system);
+  solvers::BdfIntegrator bdf(dae, settings);
+  bdf.start(0.0, mechanism->y, mechanism->yp);
+  EXPECT_TRUE(bdf.advanceTo(1.0)) << bdf.failure().reason;
+  return {bdf.y()(0), bdf.y()(1), bdf.statistics().steps, bdf.statistics().residualEvaluations};
 }
 
 }  // namespace openmss::test
