@@ -122,8 +122,16 @@ bool runDynamics(const AnalysisContext& run, const TransientRun& settings) {
           run.report.requestsWritten()
               ? "Outputs up to the last successful output step are in " + s.outputPrefix + ".req. "
               : "";
+      // Without numerical damping the Newmark rule collapses on its own (the INTEGRATOR
+      // warning, docs/integrators.md "Without numerical damping"): say so first.
+      const bool undamped = (plan.type == model::IntegratorType::Hht ||
+                             plan.type == model::IntegratorType::Newmark) &&
+                            plan.gamma == 0.5;
       run.error(nullptr, describeIntegrationFailure(m, run.system, dae, integrator),
                 where +
+                    (undamped ? "The integrator has no numerical damping (GAMMA = 0.5): choose "
+                                "ALPHA below 0 (HHT) or GAMMA above 0.5 (NEWMARK). "
+                              : "") +
                     "Look for a discontinuous force or motion near that time, or tighten "
                     "HMAX.");
       s.t = integrator.t();

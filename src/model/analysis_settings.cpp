@@ -275,6 +275,26 @@ bool applyIntegratorArguments(const language::Statement& s, IntegratorSettings& 
               "Choose GAMMA >= 0.5 and BETA >= GAMMA/2, e.g. BETA=(GAMMA+0.5)^2/4.");
     }
   }
+  // ALPHA = 0 (HHT) and GAMMA = 0.5 (NEWMARK) are in ADAMS's ranges, but the Newmark rule
+  // without numerical damping is not stable on the index-3 equations (joints and motions, and
+  // every part's orientation normalisation): the accelerations and reactions keep an undamped
+  // oscillation, and the step size collapses (docs/integrators.md, "Without numerical
+  // damping"). Run as asked, with a warning.
+  const bool hht = settings.type == T::Hht;
+  const double gamma =
+      settings.gamma.value_or(hht ? (1.0 - 2.0 * settings.alpha) / 2.0 : 0.7);  // as resolved
+  const language::Argument* undamped = s.find("GAMMA") ? s.find("GAMMA")
+                                       : hht           ? s.find("ALPHA")
+                                                       : nullptr;
+  if ((hht || settings.type == T::Newmark) && gamma == 0.5 && undamped)
+    diags.warning(undamped->where, s.subject(),
+                  std::string(integratorTypeName(settings.type)) + " without numerical damping (" +
+                      (undamped->name == "ALPHA" ? "ALPHA = 0" : "GAMMA = 0.5") +
+                      ") is not stable on the index-3 equations of constrained or rotating "
+                      "parts: the accelerations and reaction forces keep an undamped "
+                      "oscillation and the step size collapses",
+                  hht ? "Choose ALPHA below 0 (ADAMS's default is -0.3)."
+                      : "Choose GAMMA above 0.5 (ADAMS's default is 0.7), or HHT.");
   return r.ok();
 }
 

@@ -29,12 +29,12 @@ TEST(Check, PrintsTheDegreesOfFreedomOfEachValidationModel) {
       {"Prismatic_Case01", 1}, {"Prismatic_Case02", 1}, {"Cylindrical_Case01", 2}};
   const fs::path dir = scratch("dof");
   for (const auto& [name, dof] : expected) {
-    const Result r =
-        run("check '" + (kJoints / name / ("test_" + std::string(name) + ".adm")).string() + "'",
-            dir);
+    const Result r = run(
+        "check '" + (kJoints / name / ("test_" + std::string(name) + ".adm")).string() + "'", dir);
     EXPECT_EQ(r.status, 0) << r.output;
     EXPECT_NE(r.output.find("DOF " + std::to_string(dof) + "\n"), std::string::npos)
-        << name << ":\n" << r.output;
+        << name << ":\n"
+        << r.output;
   }
   fs::remove_all(dir);
 }
@@ -49,11 +49,11 @@ TEST(Check, ReportsEveryErrorOfAMalformedModelWithItsLine) {
         "MARKER/10, PART=1\n"
         "PART/2, MASS=1, CM=20, IP=1,1,1\n"
         "MARKER/20, PART=2, QP=1,0,0\n"
-        "JOINT/1, REVOLUTE, I=20, J=99\n"         // line 6: marker 99 does not exist
-        "JOINT/2, SPHERICAL, I=20\n"              // line 7: J missing
-        "MARKER/21, PART=2, QP=1,0,0.5.3\n"       // line 8: not a number
+        "JOINT/1, REVOLUTE, I=20, J=99\n"    // line 6: marker 99 does not exist
+        "JOINT/2, SPHERICAL, I=20\n"         // line 7: J missing
+        "MARKER/21, PART=2, QP=1,0,0.5.3\n"  // line 8: not a number
         "SFORCE/3, I=20, J=10, TRANSLATION, FUNCTION=NOSUCH(1)\n"  // line 9: unknown function
-        "PART/3, GROUND\n"                        // line 10: a second ground
+        "PART/3, GROUND\n"                                         // line 10: a second ground
         "END\n");
   const Result r = run("check bad.adm", dir);
   EXPECT_NE(r.status, 0);
@@ -82,8 +82,7 @@ TEST(Check, NamesAStatementTheSolverDoesNotSupportYet) {
   const Result r = run("check u.adm", dir);
   EXPECT_NE(r.status, 0);
   EXPECT_NE(r.output.find("u.adm:6"), std::string::npos) << r.output;
-  EXPECT_NE(r.output.find("MFORCE/5: MFORCE is not supported yet"), std::string::npos)
-      << r.output;
+  EXPECT_NE(r.output.find("MFORCE/5: MFORCE is not supported yet"), std::string::npos) << r.output;
   fs::remove_all(dir);
 }
 
@@ -166,8 +165,8 @@ TEST(Run, AFailedDynamicRunNamesTheEquationAndKeepsEveryOutputStep) {
   write(dir / "blow.adm", model);
   const Result r = run("run blow.adm --end 1 --dtout 0.1 --quiet", dir);
   EXPECT_EQ(r.status, 2) << r.output;
-  // The failure time is 0.55 to within HMIN = 1e-6 HMAX (GSTIFF's default, docs/integrators.md "Defaults"):
-  // printed 5.500000E-01 or 5.49999xE-01.
+  // The failure time is 0.55 to within HMIN = 1e-6 HMAX (GSTIFF's default, docs/integrators.md
+  // "Defaults"): printed 5.500000E-01 or 5.49999xE-01.
   EXPECT_TRUE(r.output.find("the dynamic analysis failed at time 5.5") != std::string::npos ||
               r.output.find("the dynamic analysis failed at time 5.49999") != std::string::npos)
       << r.output;
@@ -182,11 +181,59 @@ TEST(Run, AFailedDynamicRunNamesTheEquationAndKeepsEveryOutputStep) {
   fs::remove_all(dir);
 }
 
+// HHT with ALPHA = 0 is in ADAMS's range, but without numerical damping the Newmark rule on the
+// index-3 equations is not stable (docs/integrators.md, "Without numerical damping"): the
+// statement gets a warning at its column, and a failed run says so before the generic advice.
+// The run fails on a force without a value after t = 0.55 s (as in
+// AFailedDynamicRunNamesTheEquationAndKeepsEveryOutputStep; ERROR = 1e-2 so that the undamped
+// method reaches it: at 1e-4 it crawls, its step shrinking, for minutes); the control, ADAMS's
+// default ALPHA, fails there too, without the warning and without the sentence.
+TEST(Run, HhtWithoutNumericalDampingIsWarnedAndItsFailureSaysWhy) {
+  const fs::path dir = scratch("undamped");
+  const std::string pendulum =
+      "pendulum with a force that ends at t = 0.55 s\n"
+      "UNITS/ SYSTEM=NONE\n"
+      "PART/1, GROUND\n"
+      "MARKER/10, PART=1\n"
+      "PART/2, MASS=1, CM=20, IP=1e-10,1e-10,1e-10, VX=0, VY=1, VZ=0\n"
+      "MARKER/20, PART=2, QP=1,0,0\n"
+      "MARKER/21, PART=2, QP=0,0,0\n"
+      "JOINT/1, REVOLUTE, I=21, J=10\n"
+      "ACCGRAV/ JGRAV=-1\n"
+      "SFORCE/7, I=20, J=10, TRANSLATION, FUNCTION=1/SQRT(0.55-TIME)\n";
+  write(dir / "undamped.adm", pendulum + "INTEGRATOR/HHT, ALPHA=0, ERROR=1e-2\nEND\n");
+  write(dir / "damped.adm", pendulum + "INTEGRATOR/HHT, ERROR=1e-2\nEND\n");
+  const char* sentence = "no numerical damping (GAMMA = 0.5): choose ALPHA below 0";
+  const Result bad = run("run undamped.adm --end 1 --dtout 0.1 --quiet", dir);
+  EXPECT_EQ(bad.status, 2) << bad.output;
+  EXPECT_NE(bad.output.find("undamped.adm:11:17: warning: INTEGRATOR: HHT without numerical "
+                            "damping (ALPHA = 0)"),
+            std::string::npos)
+      << bad.output;
+  EXPECT_NE(bad.output.find("the dynamic analysis failed at time 5.49999"), std::string::npos)
+      << bad.output;
+  EXPECT_NE(bad.output.find(sentence), std::string::npos) << bad.output;
+  const Result good = run("run damped.adm --end 1 --dtout 0.1 --quiet", dir);
+  EXPECT_EQ(good.status, 2) << good.output;
+  EXPECT_NE(good.output.find("the dynamic analysis failed at time 5.49999"), std::string::npos)
+      << good.output;
+  EXPECT_EQ(good.output.find("numerical damping"), std::string::npos) << good.output;
+  // NEWMARK's undamped pair (GAMMA = 0.5, BETA = 0.25) is the same method, warned at GAMMA.
+  write(dir / "newmark.adm", pendulum + "INTEGRATOR/NEWMARK, BETA=0.25, GAMMA=0.5\nEND\n");
+  const Result newmark = run("check newmark.adm", dir);
+  EXPECT_EQ(newmark.status, 0) << newmark.output;
+  EXPECT_NE(newmark.output.find("newmark.adm:11:32: warning: INTEGRATOR: NEWMARK without "
+                                "numerical damping (GAMMA = 0.5)"),
+            std::string::npos)
+      << newmark.output;
+  fs::remove_all(dir);
+}
+
 TEST(Eval, PrintsTheValueAndTheTimeDerivative) {
   const fs::path dir = scratch("eval");
   const Result r = run("eval 'STEP(TIME,0,0,1,1)' --time 0.5 --derivative", dir);
   EXPECT_EQ(r.status, 0) << r.output;
-  EXPECT_NE(r.output.find("0.5\n"), std::string::npos) << r.output;  // midpoint of the cubic
+  EXPECT_NE(r.output.find("0.5\n"), std::string::npos) << r.output;        // midpoint of the cubic
   EXPECT_NE(r.output.find("d/dTIME 1.5"), std::string::npos) << r.output;  // 6 s (1-s) at 0.5
   fs::remove_all(dir);
 }
