@@ -217,6 +217,7 @@ bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm)
   refreshNext_ = false;
 
   const bool affineInRates = problem_.forceRowsAffineInRates();
+  stalledMove_ = false;
   for (int attempt = 0; attempt < 2; ++attempt) {
     yNew_ = yPred_;
     double previous = 0.0, rate = 0.0;
@@ -285,6 +286,7 @@ bool HhtIntegrator::attemptStep(double h, bool* newtonFailed, double* errorNorm)
           (size <= 1e-3 || lastResidual <= kResidualNoise * firstResidual ||
            lastRaw <= kRawResidualNoise * firstRaw)) {
         converged = true;
+        stalledMove_ = size > 1e-3;
         break;
       }
       if (it > 1 && rate > 0.9) break;
@@ -337,6 +339,20 @@ bool HhtIntegrator::step(double tout) {
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
   const double hmin =
       settings_.hmin > 0 ? settings_.hmin : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
+  // Stepping across a singular instant (docs/integrators.md): a step accepted on a corrector
+  // that stalled with changes above round-off (a move along the Newton matrix's near-null
+  // direction at a kinematic singularity, accepted by the residual rules) is not handed to the
+  // caller; the next step is taken at once. When no step can leave such a state (the step size
+  // falls below HMIN), the method returns once to the state it started from, which the caller
+  // has seen, and tries a step twice as long as the way to the stuck point, across it. Every
+  // state handed over is then one the caller can keep: no output, run-state record or sensor
+  // check saw the abandoned steps.
+  const double tEntry = t_;
+  yEntry_ = y_;
+  ypEntry_ = yp_;
+  accEntry_ = acc_;
+  bool returned = false;  // back at the entry state once already
+  long internalSteps = 0;
   while (t_ < tout - eps) {
     double h = std::min(h_, settings_.hmax);
     if (t_ + h >= tout - eps)
@@ -357,6 +373,18 @@ bool HhtIntegrator::step(double tout) {
       } else {
         ++stats_.rejectedSteps;
         h_ = h * std::clamp(0.9 * std::pow(1.0 / err, 1.0 / 3.0), 0.2, 0.9);
+      }
+      if (h_ < hmin && !returned && t_ > tEntry) {
+        h_ = std::min(2.0 * (t_ - tEntry), settings_.hmax);
+        t_ = tPrevious_ = tEntry;
+        y_ = yPrev_ = yEntry_;
+        yp_ = ypPrev_ = ypEntry_;
+        acc_ = accEntry_;
+        internalSteps = 0;
+        returned = true;
+        refreshNext_ = true;
+        ++stats_.rejectedSteps;
+        continue;
       }
       if (h_ < hmin) {
         failure_ = {t_,
@@ -395,6 +423,14 @@ bool HhtIntegrator::step(double tout) {
     h_ = std::min(h_, settings_.hmax);
     stats_.order = 2;
     stats_.stepSize = h;
+    ++internalSteps;
+    if (stalledMove_ && !returned && t_ < tout - eps) continue;  // not handed over yet
+    if (internalSteps > 1) {
+      // The caller sees one step from the entry state: interpolate over all of it.
+      tPrevious_ = tEntry;
+      yPrev_ = yEntry_;
+      ypPrev_ = ypEntry_;
+    }
     return true;
   }
   return true;

@@ -82,6 +82,12 @@ class HhtIntegrator final : public Integrator {
   double t_ = 0.0, tPrevious_ = 0.0, h_ = 0.0;
   Eigen::VectorXd y_, yp_, acc_;  // acc_: q'' of positions (Newmark's acceleration)
   Eigen::VectorXd yPrev_, ypPrev_;
+  // The state step() started from, the last one handed to the caller: a step whose corrector
+  // stalled along a near-null direction is not handed over, and when no step can leave its
+  // end, the method returns here and steps across (step(); docs/integrators.md, "Stepping
+  // across a singular instant").
+  Eigen::VectorXd yEntry_, ypEntry_, accEntry_;
+  bool stalledMove_ = false;  // the last solve was accepted by a stall rule, changes not small
 
   Eigen::MatrixXd jac_, jacB_;
   Eigen::PartialPivLU<Eigen::MatrixXd> lu_;
