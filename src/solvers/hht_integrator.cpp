@@ -347,10 +347,7 @@ bool HhtIntegrator::step(double tout) {
   // has seen, and tries a step twice as long as the way to the stuck point, across it. Every
   // state handed over is then one the caller can keep: no output, run-state record or sensor
   // check saw the abandoned steps.
-  const double tEntry = t_;
-  yEntry_ = y_;
-  ypEntry_ = yp_;
-  accEntry_ = acc_;
+  const double tEntry = t_;  // its state is kept (yEntry_ …) when a first stalled step leaves it
   bool returned = false;  // back at the entry state once already
   long internalSteps = 0;
   while (t_ < tout - eps) {
@@ -400,6 +397,11 @@ bool HhtIntegrator::step(double tout) {
       continue;
     }
     notifyStep({Event::Accepted, stats_.steps + 1, 2, t_, h, err});
+    if (stalledMove_ && !returned && internalSteps == 0) {  // the entry state may be needed
+      yEntry_ = y_;
+      ypEntry_ = yp_;
+      accEntry_ = acc_;
+    }
     const double gamma = settings_.gamma;
     for (int i = 0; i < y_.size(); ++i)
       if (role_(i) == roleCode(Role::Position))

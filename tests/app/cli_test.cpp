@@ -12,6 +12,7 @@
 #include <string>
 
 #include "support/cli_run.hpp"
+#include "support/integrator_test_models.hpp"
 #include "support/validation_data.hpp"
 
 namespace {
@@ -190,19 +191,14 @@ TEST(Run, AFailedDynamicRunNamesTheEquationAndKeepsEveryOutputStep) {
 // default ALPHA, fails there too, without the warning and without the sentence.
 TEST(Run, HhtWithoutNumericalDampingIsWarnedAndItsFailureSaysWhy) {
   const fs::path dir = scratch("undamped");
-  const std::string pendulum =
-      "pendulum with a force that ends at t = 0.55 s\n"
-      "UNITS/ SYSTEM=NONE\n"
-      "PART/1, GROUND\n"
-      "MARKER/10, PART=1\n"
-      "PART/2, MASS=1, CM=20, IP=1e-10,1e-10,1e-10, VX=0, VY=1, VZ=0\n"
-      "MARKER/20, PART=2, QP=1,0,0\n"
-      "MARKER/21, PART=2, QP=0,0,0\n"
-      "JOINT/1, REVOLUTE, I=21, J=10\n"
-      "ACCGRAV/ JGRAV=-1\n"
-      "SFORCE/7, I=20, J=10, TRANSLATION, FUNCTION=1/SQRT(0.55-TIME)\n";
-  write(dir / "undamped.adm", pendulum + "INTEGRATOR/HHT, ALPHA=0, ERROR=1e-2\nEND\n");
-  write(dir / "damped.adm", pendulum + "INTEGRATOR/HHT, ERROR=1e-2\nEND\n");
+  // The DAE test-set pendulum (tests/support) with a force on line 10 and INTEGRATOR on line 11.
+  const auto pendulum = [](const std::string& integrator) {
+    return openmss::test::beforeEnd(
+        openmss::test::kPendulum,
+        "SFORCE/7, I=20, J=10, TRANSLATION, FUNCTION=1/SQRT(0.55-TIME)\n" + integrator + "\n");
+  };
+  write(dir / "undamped.adm", pendulum("INTEGRATOR/HHT, ALPHA=0, ERROR=1e-2"));
+  write(dir / "damped.adm", pendulum("INTEGRATOR/HHT, ERROR=1e-2"));
   const char* sentence = "no numerical damping (GAMMA = 0.5): choose ALPHA below 0";
   const Result bad = run("run undamped.adm --end 1 --dtout 0.1 --quiet", dir);
   EXPECT_EQ(bad.status, 2) << bad.output;
@@ -219,7 +215,7 @@ TEST(Run, HhtWithoutNumericalDampingIsWarnedAndItsFailureSaysWhy) {
       << good.output;
   EXPECT_EQ(good.output.find("numerical damping"), std::string::npos) << good.output;
   // NEWMARK's undamped pair (GAMMA = 0.5, BETA = 0.25) is the same method, warned at GAMMA.
-  write(dir / "newmark.adm", pendulum + "INTEGRATOR/NEWMARK, BETA=0.25, GAMMA=0.5\nEND\n");
+  write(dir / "newmark.adm", pendulum("INTEGRATOR/NEWMARK, BETA=0.25, GAMMA=0.5"));
   const Result newmark = run("check newmark.adm", dir);
   EXPECT_EQ(newmark.status, 0) << newmark.output;
   EXPECT_NE(newmark.output.find("newmark.adm:11:32: warning: INTEGRATOR: NEWMARK without "
