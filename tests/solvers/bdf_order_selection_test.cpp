@@ -111,9 +111,14 @@ RunResult runModes(double error, bool fixedCoefficients, double end, int kmax = 
 // GSTIFF took 4149 steps at ERROR = 1e-3 and 9525 at 1e-4 over these 20 s, more than at 1e-6
 // (at 1e-4: orders 3-6 throughout, 1556 rejected steps, 2525 Jacobians): the 40 and 400 rad/s
 // modes, left below the tolerance by the error test, grew at orders 3-4 until they held the
-// step. With the detection: 235 and 1277 steps (WSTIFF: 1e-4 took 4069 steps, 1032 Jacobians;
-// now 1662 and 470). The bounds leave room for changes elsewhere in the step control and
-// still fail the old rule at 1e-4 for both methods and at 1e-3 for GSTIFF.
+// step (WSTIFF at 1e-4: 4069 steps, 1032 Jacobians). With the detection, when written: 235 and
+// 1277 steps (WSTIFF 1662 steps, 470 Jacobians at 1e-4). On 2026-11-29 the step control had
+// moved on to GSTIFF 290 and 1832 steps (555 Jacobians at 1e-4), WSTIFF at 1e-4 1843 steps,
+// 605 Jacobians; since a matrix formed for a rejected attempt counts as an older one
+// (docs/integrators.md, "Crossing a flat passage at tight tolerances") GSTIFF 1652 steps, 508
+// Jacobians and WSTIFF 2101 steps, 774 Jacobians at 1e-4: the spread of the step sequence on
+// this model (the next test's eight runs take 6 % fewer Jacobians in all). The bounds leave room
+// for such changes and still fail the old rule at 1e-4 for both methods and at 1e-3 for GSTIFF.
 TEST(BdfOrderSelection, LooseToleranceIsNotHeldByAnUnstableOrder) {
   for (bool fixed : {true, false}) {
     const RunResult loose = runModes(1e-3, fixed, 20.0);
@@ -122,7 +127,7 @@ TEST(BdfOrderSelection, LooseToleranceIsNotHeldByAnUnstableOrder) {
     EXPECT_LT(loose.stats.steps, 1000) << (fixed ? "GSTIFF" : "WSTIFF");
     EXPECT_LT(medium.stats.steps, 2500) << (fixed ? "GSTIFF" : "WSTIFF");
     EXPECT_LT(loose.stats.jacobianEvaluations, 300) << (fixed ? "GSTIFF" : "WSTIFF");
-    EXPECT_LT(medium.stats.jacobianEvaluations, 700) << (fixed ? "GSTIFF" : "WSTIFF");
+    EXPECT_LT(medium.stats.jacobianEvaluations, 900) << (fixed ? "GSTIFF" : "WSTIFF");
   }
 }
 
