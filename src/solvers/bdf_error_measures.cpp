@@ -1,8 +1,9 @@
 // BdfIntegrator's measures of error and change (docs/integrators.md): the weighted norms and
 // weights of the error and convergence tests, the round-off floor of a corrector change, the
 // noise widening of a stalled solve's error test, the order-selection estimates from the
-// divided differences, and the worst equation and unknown for failure reports. Moved out of
-// bdf_integrator.cpp unchanged (file length).
+// divided differences, the step and order after a displacement error-test failure, and the worst
+// equation and unknown for failure reports. Moved out of bdf_integrator.cpp unchanged (file
+// length).
 
 #include <algorithm>
 #include <cmath>
@@ -113,6 +114,25 @@ void BdfIntegrator::updateDivided() {
     const size_t u = static_cast<size_t>(l);
     diagonal_[u] = (diagonal_[u - 1] - previousDiagonal_[u - 1]) / (ts_[0] - ts_[u]);
   }
+}
+
+// The displacement error test failed: the next step and order (moved out of step(), then out of
+// bdf_integrator.cpp, unchanged).
+void BdfIntegrator::rejectOnDisplacement(double h, double err) {
+  ++consecutiveErrorFailures_;
+  double ratio = std::clamp(0.9 * std::pow(1.0 / err, 1.0 / (k_ + 1)), 0.2, 0.9);
+  if (k_ > 1) {
+    // Drop the order when the lower one promises the longer step (its error estimate
+    // from the accepted history), or when the error test keeps failing at this order.
+    const double eLow = orderErrorEstimate(k_ - 1, h);
+    const double rLow = eLow > 0 ? 0.9 * std::pow(1.0 / eLow, 1.0 / k_) : 0.0;
+    if (rLow > ratio || consecutiveErrorFailures_ >= 2) {
+      k_ = k_ - 1;
+      stepsAtOrder_ = 0;
+      if (rLow > ratio) ratio = std::min(rLow, 0.9);
+    }
+  }
+  h_ = h * ratio;
 }
 
 }  // namespace openmss::solvers

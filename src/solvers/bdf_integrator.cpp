@@ -490,24 +490,6 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
   return *errorNorm <= 1.0 && !velocityRejected_;
 }
 
-// The displacement error test failed: the next step and order (moved out of step() unchanged).
-void BdfIntegrator::rejectOnDisplacement(double h, double err) {
-  ++consecutiveErrorFailures_;
-  double ratio = std::clamp(0.9 * std::pow(1.0 / err, 1.0 / (k_ + 1)), 0.2, 0.9);
-  if (k_ > 1) {
-    // Drop the order when the lower one promises the longer step (its error estimate
-    // from the accepted history), or when the error test keeps failing at this order.
-    const double eLow = orderErrorEstimate(k_ - 1, h);
-    const double rLow = eLow > 0 ? 0.9 * std::pow(1.0 / eLow, 1.0 / k_) : 0.0;
-    if (rLow > ratio || consecutiveErrorFailures_ >= 2) {
-      k_ = k_ - 1;
-      stepsAtOrder_ = 0;
-      if (rLow > ratio) ratio = std::min(rLow, 0.9);
-    }
-  }
-  h_ = h * ratio;
-}
-
 // Over ~150 lines: kept whole in the pure-move pass of issue 23; its phases share many locals,
 // so a split needs a state struct (left for a change that can be checked on its own).
 bool BdfIntegrator::step(double tout) {
