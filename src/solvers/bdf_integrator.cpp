@@ -28,6 +28,14 @@ constexpr double kTightChange = 1e-9;
 constexpr double kStalledChange = 1e-1;
 // ... or whose every change is below kRoundOffUlps of the unknown's own round-off
 // (bdf_error_measures.cpp, withinRoundOff).
+// A solve accepted by a stall rule whose last change is above this share of the tolerance moved
+// along the Newton matrix's near-null direction rather than stopping at round-off (HHT's
+// threshold): the step is not handed over at once (step(), "Stepping across a singular
+// instant" in docs/integrators.md).
+constexpr double kStalledMove = 1e-3;
+// A step across that the error test shortens to end within this share of the way to the stuck
+// point from it ends this share past it instead (step()).
+constexpr double kAcrossClearance = 0.25;
 // A cj change beyond this share re-forms the Newton matrix.
 constexpr double kCjDrift = 0.2;
 // ... and so does a step that converged on an older matrix at a contraction rate above this
@@ -82,22 +90,6 @@ constexpr double kRawResidualNoise = 1e-5;
 // its role (the noise lies along the matrix's near-null directions, which mix the extra
 // degrees of freedom, so which unknown shows it is chance; DSTIFF's rule, docs/integrators.md,
 // "DSTIFF and ABAM"). A solve that converges is unchanged.
-// Stability-limit detection (BdfIntegrator::step): an order >= 3 whose step falls below this
-// share of the last order-2 step is abandoned for order 2 for kFirstStabilityBar steps, twice
-// as many at every further detection.
-constexpr double kStabilityShrink = 0.7;
-constexpr long kFirstStabilityBar = 50;
-// ... or, at orders 3 and 4 (kGrowthTopOrder), whose estimates of orders k-1 and k both grow
-// by more than kGrowthFactor over kGrowthWindow steps at one step size and order, at rates
-// within kGrowthAgreement of each other: one mode growing geometrically behind both (even
-// window: a mode near h*omega = pi alternates in sign from step to step). Measured on the
-// 100-link planar chain (docs/integrators.md): a window of 8 and a factor of 1.5 caught the
-// growth too late at ERROR = 1e-4; the test at orders 5-6 as well cost 100x in tip error at
-// 1e-6, where those orders damp the resolved modes and the estimates grow with the physics.
-constexpr int kGrowthWindow = 6;
-constexpr double kGrowthFactor = 1.25;
-constexpr int kGrowthTopOrder = 4;
-constexpr double kGrowthAgreement = 1.3;
 // The I3 velocity test (docs/integrators.md, "The I3 velocity test"). An index-3 velocity is
 // not under the displacement error test, yet its local error becomes an energy, hence phase,
 // error of undamped motion (A02, N = 40, GSTIFF at ERROR = 1e-6: 1.6e-2 m after 20 s). Its
@@ -147,6 +139,8 @@ void BdfIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   stabilityLimitDetections_ = 0;
   stepsSinceRoughSolve_ = std::numeric_limits<long>::max() / 2;
   lastSolveAtNoise_ = false;
+  stalledMove_ = false;
+  handedFrom_ = t0;
   heldLow_.clear();
   heldOwn_.clear();
   h_ = settings_.hinit > 0 ? settings_.hinit : 1e-3;
@@ -213,6 +207,7 @@ void BdfIntegrator::restart(double t0, const Eigen::VectorXd& y0, const Eigen::V
 bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* errorNorm) {
   *newtonFailed = false;
   velocityRejected_ = false;
+  stalledMove_ = false;
   const double tNew = t_ + h;
   const int nh = static_cast<int>(ts_.size());
   double nodes[8] = {}, w[8], dw[8], a[8];
@@ -437,6 +432,7 @@ bool BdfIntegrator::attemptStep(double h, int k, bool* newtonFailed, double* err
     if (converged) {
       if (atNoise) widenForNoise();
       lastSolveAtNoise_ = atNoise;
+      stalledMove_ = atNoise && previous > kStalledMove;
       break;
     }
     if (jacobianCurrent_ || attempt == 1) {
@@ -496,14 +492,27 @@ bool BdfIntegrator::step(double tout) {
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
   const double hmin =
       settings_.hmin > 0 ? settings_.hmin : std::max(1e-14, 1e-10 * std::min(settings_.hmax, 1e3));
-  // Attempts until one step is accepted (or the step size falls below HMIN).
+  // Attempts until one step is accepted (or the step size falls below HMIN). Stepping across a
+  // singular instant (docs/integrators.md, as HhtIntegrator::step does): a step accepted on a
+  // stalled move (stalledMove_) is not handed to the caller; the next step is taken at once.
+  // When no step can leave such a state, the method returns, once per call, to the state it
+  // started from (which the caller has seen; its history in entry_) and tries a step twice as
+  // long as the way to the stuck point, across it.
+  const double tEntry = t_;
+  bool returned = false;  // back at the entry state once already
+  bool saved = false;     // entry_ holds the entry state
+  double tStuck = 0.0;    // where no step could leave
+  bool cleared = false;   // the step across was lengthened past tStuck
+  bool exact = false;     // take h_ as it is (up to the output time)
   while (t_ < tout - eps) {
     double h = std::min(h_, settings_.hmax);
-    // Land exactly on the output time; avoid leaving a sliver for the next step.
+    // Land exactly on the output time; avoid leaving a sliver for the next step (not for the
+    // step across, whose end is chosen).
     if (t_ + h >= tout - eps)
       h = tout - t_;
-    else if (t_ + 2.0 * h > tout)
+    else if (t_ + 2.0 * h > tout && !exact)
       h = 0.5 * (tout - t_);
+    exact = false;
     bool newtonFailed = false;
     double err = 0.0;
     using Event = BdfStepInfo::Event;
@@ -525,10 +534,31 @@ bool BdfIntegrator::step(double tout) {
         } else {
           rejectOnDisplacement(h, err);
         }
+        // Across: a shorter step that would end near the stuck point ends past it instead, by
+        // kAcrossClearance of the way there (once).
+        if (returned && !cleared && t_ == tEntry &&
+            std::abs(t_ + h_ - tStuck) < kAcrossClearance * (tStuck - tEntry)) {
+          h_ = (1.0 + kAcrossClearance) * (tStuck - tEntry);
+          cleared = true;
+          exact = true;
+        }
         // The matrix was formed for the rejected attempt (its c_j and predictor): for the
         // shorter step it is an older matrix (docs/integrators.md, "Crossing a flat passage at
         // tight tolerances").
         jacobianCurrent_ = false;
+      }
+      if (h_ < hmin && saved && !returned && t_ > tEntry) {
+        const double across = 2.0 * (t_ - tEntry);
+        tStuck = t_;
+        exact = true;
+        restoreEntry();
+        h_ = std::min(across, settings_.hmax);
+        returned = true;
+        jacobianCurrent_ = false;
+        refreshNext_ = true;
+        consecutiveErrorFailures_ = 0;
+        ++stats_.rejectedSteps;
+        continue;
       }
       if (h_ < hmin) {
         failure_.time = t_;
@@ -544,6 +574,10 @@ bool BdfIntegrator::step(double tout) {
       continue;
     }
     // Accept.
+    if (stalledMove_ && !saved && t_ == tEntry) {  // the entry state may be needed
+      saveEntry();
+      saved = true;
+    }
     consecutiveErrorFailures_ = 0;
     notifyStep({Event::Accepted, stats_.steps + 1, k_, t_, h, err});
     lastStepOrder_ = k_;
@@ -571,114 +605,9 @@ bool BdfIntegrator::step(double tout) {
     stepsSinceRoughSolve_ = lastSolveAtNoise_ ? 0 : stepsSinceRoughSolve_ + 1;
     jacobianCurrent_ = false;
 
-    // Next order and step: compare the error estimates of orders k-1, k, k+1.
-    double ratio = 0.9 * std::pow(1.0 / std::max(err, 1e-10), 1.0 / (k_ + 1));
-    const double ownRatio = ratio;
-    int nextK = k_;
-    if (stepsAtOrder_ > k_ + 1) {
-      const double eLow = k_ > 1 ? orderErrorEstimate(k_ - 1, h) : -1.0;
-      const double eHigh = k_ < settings_.kmax ? orderErrorEstimate(k_ + 1, h) : -1.0;
-      const double rLow = eLow > 0 ? 0.9 * std::pow(1.0 / eLow, 1.0 / k_) : 0.0;
-      const double rHigh = eHigh > 0 ? 0.9 * std::pow(1.0 / eHigh, 1.0 / (k_ + 2)) : 0.0;
-      const double capped = settings_.hmax / h;  // ratios above this cannot lengthen the step
-      if (ratio >= capped && (rLow >= capped || rLow == 0.0) && (rHigh >= capped || rHigh == 0.0)) {
-        // The step is held at HMAX whatever the order: take the order with the smallest error.
-        double eNow = std::max(err, 1e-300);
-        if (eHigh > 0 && eHigh < eNow) {
-          nextK = k_ + 1;
-          ratio = rHigh;
-        } else if (eLow > 0 && eLow < 0.5 * eNow) {
-          nextK = k_ - 1;
-          ratio = rLow;
-        }
-      } else if (rLow > ratio && rLow >= rHigh) {
-        nextK = k_ - 1;
-        ratio = rLow;
-      } else if (rHigh > 1.1 * ratio) {
-        nextK = k_ + 1;
-        ratio = rHigh;
-      }
-    } else if (static_cast<int>(ts_.size()) >= 2 && k_ == 1 && stepsAtOrder_ >= 2 &&
-               settings_.kmax > 1) {
-      // Leave the start-up order as soon as history allows.
-      nextK = 2;
-    }
-    // Stability limit of orders >= 3 (docs/integrators.md, "Order selection"). On an undamped
-    // mode BDF3 and BDF4 grow the amplitude at every step, BDF5 and BDF6 in a band of h*omega
-    // around 1-3; only orders 1-2 damp every such mode. A mode the error test had left below
-    // the tolerance then grows until it holds the step, which shrinks step after step while
-    // the solution itself does not change character. Detected early as the growth of the
-    // order k-1 and k estimates at a held step (orders 3-4, kGrowthWindow), late as the step of
-    // an order >= 3 falling below kStabilityShrink of the last one order 2 took: the order
-    // drops to 2 (which damps the mode) and stays there for a bar that doubles at every
-    // detection, so that a
-    // model whose higher orders pay gets them back and one that keeps failing at them stops
-    // paying for retries.
-    const bool shortened = h < std::min(h_, settings_.hmax);  // landed on an output time
-    bool stabilityJump = false;
-    bool modeGrowing = false;
-    if (k_ >= 3 && k_ <= kGrowthTopOrder && !shortened && stepsAtOrder_ > 1 &&
-        h == stats_.stepSize) {
-      heldLow_.push_back(orderErrorEstimate(k_ - 1, h));
-      heldOwn_.push_back(orderErrorEstimate(k_, h));
-      if (static_cast<int>(heldOwn_.size()) > kGrowthWindow + 1) {
-        heldLow_.pop_front();
-        heldOwn_.pop_front();
-      }
-      if (static_cast<int>(heldOwn_.size()) == kGrowthWindow + 1 && heldLow_.front() > 0 &&
-          heldOwn_.front() > 0) {
-        const double gLow = heldLow_.back() / heldLow_.front();
-        const double gOwn = heldOwn_.back() / heldOwn_.front();
-        modeGrowing = gLow > kGrowthFactor && gOwn > kGrowthFactor &&
-                      std::max(gLow, gOwn) < kGrowthAgreement * std::min(gLow, gOwn);
-      }
-    } else {
-      heldLow_.clear();
-      heldOwn_.clear();
-    }
-    // A corrector failure quarters the step whatever the error test says, and a solve accepted
-    // at its noise (A02's flat passages) leaves that noise in the divided differences of the
-    // next k + 1 steps, whose predictors extrapolate it and whose error tests then cut the
-    // step (estimates up to 3000x the true local error): such a step is no evidence of a
-    // stability limit (docs/integrators.md, "A rough solve is not a stability limit";
-    // dropping to order 2 for the bar there cost A02 7e-4 of its energy).
-    const bool historyHoldsRoughSolve = stepsSinceRoughSolve_ <= k_ + 1;
-    if (!shortened) {
-      if (k_ <= 2) {
-        lowOrderStep_ = h;
-      } else if ((h < kStabilityShrink * lowOrderStep_ && !historyHoldsRoughSolve) || modeGrowing) {
-        nextK = 2;
-        // Back to order 2's step, which damps the grown mode (kept when growth was caught).
-        ratio = modeGrowing ? 1.0 : lowOrderStep_ / h;
-        heldLow_.clear();
-        heldOwn_.clear();
-        ++stabilityLimitDetections_;
-        stabilityJump = true;
-        stabilityBar_ = stabilityBar_ == 0 ? kFirstStabilityBar : 2 * stabilityBar_;
-        highOrderBarredUntil_ = stats_.steps + stabilityBar_;
-      }
-    }
-    if (nextK > 2 && nextK > k_ && stats_.steps < highOrderBarredUntil_) {
-      nextK = k_;
-      ratio = ownRatio;
-    }
-    if (nextK != k_) {
-      k_ = nextK;
-      stepsAtOrder_ = 0;
-    }
-    // The I3 velocity test bounds the next step (at the estimate of the order just taken).
-    if (velocityTested_)
-      ratio = std::min(
-          ratio, 0.9 * std::pow(1.0 / std::max(velocityError_, 1e-10), 1.0 / (lastStepOrder_ + 1)));
-    if (ratio >= 1.5)
-      h_ = h * std::min(ratio, stabilityJump ? ratio : 2.0);
-    else if (ratio < 1.0)
-      h_ = h * std::max(ratio, 0.5);
-    else
-      h_ = std::max(h, h_);
-    h_ = std::min(h_, settings_.hmax);
-    stats_.order = k_;
-    stats_.stepSize = h;
+    selectNextStep(h, err);
+    if (stalledMove_ && !returned && t_ < tout - eps) continue;  // not handed over yet
+    handedFrom_ = tEntry;
     return true;
   }
   return true;

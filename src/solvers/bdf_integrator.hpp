@@ -41,7 +41,9 @@ class BdfIntegrator final : public Integrator {
   double t() const override { return t_; }
   const Eigen::VectorXd& y() const override { return y_; }
   const Eigen::VectorXd& yp() const override { return yp_; }
-  double previousTime() const override { return ts_.size() > 1 ? ts_[1] : t_; }
+  // The time of the state handed over before the last step() (the start of the steps it took;
+  // more than one when it stepped across a singular instant, step()).
+  double previousTime() const override { return handedFrom_; }
   // The corrector polynomial of the last step (order k through the last k+1 solutions).
   void interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const override;
   void interpolateComponents(double s, const std::vector<int>& components,
@@ -83,6 +85,30 @@ class BdfIntegrator final : public Integrator {
   // The noise a solve accepted by a stall rule carries (kStalledChange and the rules after it
   // in the .cpp): laterChanges_ spread over each role, then the error weights widened by it.
   void widenForNoise();
+  // After an accepted step h with error estimate err: the next order k_ and step h_ (the
+  // order-selection and stability-limit rules, bdf_order_selection.cpp).
+  void selectNextStep(double h, double err);
+
+  // Stepping across a singular instant (docs/integrators.md, "Stepping across a singular
+  // instant"): everything a step changes, saved at the state step() started from when its
+  // first step was accepted on a stalled move, and put back to step across from there.
+  struct Resumable {
+    double t = 0.0;
+    Eigen::VectorXd y, yp;
+    std::deque<double> ts;
+    std::deque<Eigen::VectorXd> ys;
+    std::vector<Eigen::VectorXd> diagonal;
+    double h = 0.0;
+    int k = 1, stepsAtOrder = 0, lastStepOrder = 1;
+    double lowOrderStep = 0.0;
+    long highOrderBarredUntil = 0, stabilityBar = 0, stepsSinceRoughSolve = 0;
+    bool lastSolveAtNoise = false;
+    std::deque<double> heldLow, heldOwn;
+    int order = 1;
+    double stepSize = 0.0;
+  };
+  void saveEntry();
+  void restoreEntry();
 
   DaeProblem& problem_;
   MultistepSettings settings_;
@@ -110,6 +136,11 @@ class BdfIntegrator final : public Integrator {
   // accepted at noise.
   long stepsSinceRoughSolve_ = 0;
   bool lastSolveAtNoise_ = false;
+  // The last solve was accepted by a stall rule with changes above kStalledMove of the
+  // tolerance (a move along the Newton matrix's near-null direction, not round-off).
+  bool stalledMove_ = false;
+  Resumable entry_;
+  double handedFrom_ = 0.0;  // previousTime()
   // Error estimates of orders k-1 and k over the run of steps taken at the current order with
   // one unchanged step size (oldest first; at most kGrowthWindow + 1 entries).
   std::deque<double> heldLow_, heldOwn_;
