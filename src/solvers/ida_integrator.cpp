@@ -52,6 +52,9 @@ constexpr double kNewtonConvergence = 1e-4;
 // kRoundOffUlps ulps of the unknown (a velocity: of the largest position, times c_j, as the
 // velocities are recovered from the positions through c_j).
 constexpr double kStalledChange = 1e-1;
+// A solve accepted by a stall rule whose last change is above this share of the tolerance
+// moved along the near-null direction (BdfIntegrator's and HhtIntegrator's threshold).
+constexpr double kStalledMove = 1e-3;
 constexpr double kRoundOffUlps = 1000.0;
 constexpr double kEps = std::numeric_limits<double>::epsilon();
 
@@ -105,6 +108,9 @@ struct IdaIntegrator::Engine {
   std::deque<Eigen::VectorXd> acceptedNoise;
   Eigen::VectorXd predictorNoise;
   bool solveAtNoise = false;
+  // ... with a last change above kStalledMove of the tolerance: a move along the Newton
+  // matrix's near-null direction, not round-off (IdaIntegrator::step).
+  bool stalledMove = false;
 
   ~Engine() {
     if (ida) IDAFree(&ida);
@@ -252,6 +258,7 @@ struct IdaIntegrator::Engine {
       e->firstResidual = balanced;
       e->firstRaw = raw;
       e->solveAtNoise = false;
+      e->stalledMove = false;
       e->updatePredictorNoise();
       if (verdict == SUN_NLS_SUCCESS) e->widen(view(ewt), false);
       return verdict;
@@ -271,6 +278,7 @@ struct IdaIntegrator::Engine {
       // at the level of the largest of each role (spreadNoise), nor for less than the noise the
       // predictor carries (predictorNoise).
       e->solveAtNoise = true;
+      e->stalledMove = size > kStalledMove;
       e->spreadNoise();
       e->widen(view(ewt), true);
       return SUN_NLS_SUCCESS;
@@ -483,47 +491,92 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
 
   e.acceptedTimes.assign(1, t0);
   e.acceptedNoise.assign(1, Eigen::VectorXd());
-  t_ = tPrevious_ = t0;
+  t_ = tPrevious_ = lastStepStart_ = t0;
   y_ = y0;
   yp_ = yp0;
+  yEntry_.resize(0);
+  ypEntry_.resize(0);
+  countedBefore_ = {};
   stats_ = {};
   failure_ = {};
   outcome_ = IdaOutcome::Ok;
 }
 
+// Stepping across a singular instant (docs/integrators.md, as BdfIntegrator::step): a step
+// accepted on a stalled move is not handed to the caller; the next one is taken at once. When
+// IDA then fails (repeated corrector or error-test failures), it is re-initialised, once per
+// call, at the state the call started from (which the caller has seen) with a first step twice
+// as long as the way to where it failed, across it. A re-initialised IDA starts again at order
+// 1 without its history.
 bool IdaIntegrator::step(double tout) {
   Engine& e = *engine_;
   const double eps = 1e-12 * std::max(1.0, std::abs(tout));
   if (t_ >= tout - eps) return true;
   IDASetStopTime(e.ida, tout);
-  double tReturned = t_;
-  const int flag = IDASolve(e.ida, tout, &tReturned, e.yy, e.yp, IDA_ONE_STEP);
-  if (flag < 0) {
-    recordFailure(flag);
+  const double tEntry = t_;
+  bool saved = false, returned = false;
+  for (;;) {
+    double tReturned = t_;
+    const int flag = IDASolve(e.ida, tout, &tReturned, e.yy, e.yp, IDA_ONE_STEP);
+    if (flag < 0) {
+      double tStuck = t_;
+      IDAGetCurrentTime(e.ida, &tStuck);
+      if (saved && !returned && tStuck > tEntry &&
+          (flag == IDA_CONV_FAIL || flag == IDA_ERR_FAIL)) {
+        readStatistics();
+        countedBefore_ = stats_;
+        ++countedBefore_.rejectedSteps;
+        Engine::view(e.yy) = yEntry_;
+        Engine::view(e.yp) = ypEntry_;
+        IDAReInit(e.ida, tEntry, e.yy, e.yp);
+        IDASetInitStep(e.ida, std::min(2.0 * (tStuck - tEntry), tout - tEntry));
+        IDASetStopTime(e.ida, tout);
+        e.acceptedTimes.assign(1, tEntry);
+        e.acceptedNoise.assign(1, Eigen::VectorXd());
+        t_ = tEntry;
+        y_ = yEntry_;
+        yp_ = ypEntry_;
+        returned = true;
+        continue;
+      }
+      recordFailure(flag);
+      readStatistics();
+      return false;
+    }
+    double tCurrent = tReturned, hLast = 0.0;
+    IDAGetCurrentTime(e.ida, &tCurrent);
+    IDAGetLastStep(e.ida, &hLast);
+    lastStepStart_ = tCurrent - hLast;
+    e.recordAccepted(tCurrent);
+    if (e.stalledMove && !saved && !returned) {  // the entry state may be needed
+      yEntry_ = y_;
+      ypEntry_ = yp_;
+      saved = true;
+    }
+    t_ = std::abs(tReturned - tout) <= eps ? tout : tReturned;
+    y_ = Engine::view(e.yy);
+    yp_ = Engine::view(e.yp);
     readStatistics();
-    return false;
+    if (observingSteps()) {
+      // DEBUG/EPRINT: IDA takes its rejected attempts inside IDASolve (counted in the
+      // statistics), so each accepted step is reported as its attempt (order, start, step size)
+      // and its acceptance; without the attempt line the order, time and step of DSTIFF were
+      // missing from the .msg (docs/validation.md, "IFToMM A02", DSTIFF at N = 40).
+      IDAGetErrWeights(e.ida, e.weights);
+      IDAGetEstLocalErrors(e.ida, e.localErrors);
+      notifyStep(
+          {StepInfo::Event::Attempt, stats_.steps, stats_.order, lastStepStart_, hLast, 0.0});
+      notifyStep({StepInfo::Event::Accepted, stats_.steps, stats_.order, lastStepStart_, hLast,
+                  N_VWrmsNorm(e.localErrors, e.weights)});
+    }
+    if (e.stalledMove && !returned && t_ < tout - eps) continue;  // not handed over yet
+    tPrevious_ = tEntry;
+    if (!saved) {
+      yEntry_.resize(0);
+      ypEntry_.resize(0);
+    }
+    return true;
   }
-  double tCurrent = tReturned, hLast = 0.0;
-  IDAGetCurrentTime(e.ida, &tCurrent);
-  IDAGetLastStep(e.ida, &hLast);
-  tPrevious_ = tCurrent - hLast;
-  e.recordAccepted(tCurrent);
-  t_ = std::abs(tReturned - tout) <= eps ? tout : tReturned;
-  y_ = Engine::view(e.yy);
-  yp_ = Engine::view(e.yp);
-  readStatistics();
-  if (observingSteps()) {
-    // DEBUG/EPRINT: IDA takes its rejected attempts inside IDASolve (counted in the
-    // statistics), so each accepted step is reported as its attempt (order, start, step size)
-    // and its acceptance; without the attempt line the order, time and step of DSTIFF were
-    // missing from the .msg (docs/validation.md, "IFToMM A02", DSTIFF at N = 40).
-    IDAGetErrWeights(e.ida, e.weights);
-    IDAGetEstLocalErrors(e.ida, e.localErrors);
-    notifyStep({StepInfo::Event::Attempt, stats_.steps, stats_.order, tPrevious_, hLast, 0.0});
-    notifyStep({StepInfo::Event::Accepted, stats_.steps, stats_.order, tPrevious_, hLast,
-                N_VWrmsNorm(e.localErrors, e.weights)});
-  }
-  return true;
 }
 
 void IdaIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& yp) const {
@@ -531,6 +584,18 @@ void IdaIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
   if (s == t_) {
     y = y_;
     yp = yp_;
+    return;
+  }
+  if (s < lastStepStart_ && yEntry_.size() == y_.size() && s >= tPrevious_) {
+    // Before IDA's last step, after the state handed over last (step(): the steps taken at
+    // once after a stalled move): the cubic Hermite through both ends.
+    const double span = t_ - tPrevious_, x = (s - tPrevious_) / span;
+    const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
+    const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
+    y = h00 * yEntry_ + h10 * span * ypEntry_ + h01 * y_ + h11 * span * yp_;
+    const double d00 = 6 * x * (x - 1), d10 = (1 - x) * (1 - 3 * x);
+    const double d01 = -6 * x * (x - 1), d11 = x * (3 * x - 2);
+    yp = (d00 * yEntry_ + d01 * y_) / span + d10 * ypEntry_ + d11 * yp_;
     return;
   }
   IDAGetDky(e.ida, s, 0, e.work);
@@ -542,14 +607,15 @@ void IdaIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
 void IdaIntegrator::readStatistics() {
   Engine& e = *engine_;
   long value = 0;
+  // IDAReInit (step()) resets IDA's counters: the runs before it are in countedBefore_.
   IDAGetNumSteps(e.ida, &value);
-  stats_.steps = value;
+  stats_.steps = countedBefore_.steps + value;
   IDAGetNumErrTestFails(e.ida, &value);
-  stats_.rejectedSteps = value;
+  stats_.rejectedSteps = countedBefore_.rejectedSteps + value;
   IDAGetNumNonlinSolvConvFails(e.ida, &value);
-  stats_.newtonFailures = value;
+  stats_.newtonFailures = countedBefore_.newtonFailures + value;
   IDAGetNumResEvals(e.ida, &value);
-  stats_.residualEvaluations = value;
+  stats_.residualEvaluations = countedBefore_.residualEvaluations + value;
   stats_.jacobianEvaluations = e.jacobianEvaluations;
   int order = 1;
   IDAGetLastOrder(e.ida, &order);

@@ -64,6 +64,14 @@ class IdaIntegrator final : public Integrator {
   IdaOutcome outcome_ = IdaOutcome::Ok;
   double t_ = 0.0, tPrevious_ = 0.0;
   Eigen::VectorXd y_, yp_;
+  // Stepping across a singular instant (step(); docs/integrators.md, "Stepping across a
+  // singular instant"): the state the call started from, kept when its first step was accepted
+  // on a stalled move; the start of IDA's last step (interpolate() spans the steps before it
+  // with a cubic Hermite from the entry state); and the counters of the IDA runs before the
+  // last re-initialisation, which resets IDA's own.
+  Eigen::VectorXd yEntry_, ypEntry_;
+  double lastStepStart_ = 0.0;
+  IntegratorStatistics countedBefore_;
 };
 
 }  // namespace openmss::solvers
