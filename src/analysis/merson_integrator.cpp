@@ -8,6 +8,7 @@
 #include "analysis/analysis_context.hpp"  // formatNumber
 #include "analysis/predicted_residual.hpp"
 #include "mechanics/state_layout.hpp"
+#include "solvers/hermite_weights.hpp"
 
 namespace openmss::analysis {
 namespace {
@@ -292,11 +293,9 @@ void MersonIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd
     return;
   }
   const double th = (s - tPrevious_) / h;
-  const double h00 = (1.0 + 2.0 * th) * (1.0 - th) * (1.0 - th);
-  const double h10 = th * (1.0 - th) * (1.0 - th);
-  const double h01 = th * th * (3.0 - 2.0 * th);
-  const double h11 = th * th * (th - 1.0);
-  const Eigen::VectorXd x = h00 * xPrevious_ + (h10 * h) * fPrevious_ + h01 * x_ + (h11 * h) * f_;
+  const solvers::HermiteWeights w = solvers::hermiteWeights(th);
+  const Eigen::VectorXd x =
+      w.h00 * xPrevious_ + (w.h10 * h) * fPrevious_ + w.h01 * x_ + (w.h11 * h) * f_;
   y = y_;
   scatter(x, y);
   ++stats_.residualEvaluations;

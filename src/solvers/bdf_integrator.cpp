@@ -554,7 +554,6 @@ bool BdfIntegrator::step(double tout) {
         restoreEntry();
         h_ = std::min(across, settings_.hmax);
         returned = true;
-        jacobianCurrent_ = false;
         refreshNext_ = true;
         consecutiveErrorFailures_ = 0;
         ++stats_.rejectedSteps;

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "solvers/bdf_integrator.hpp"
+#include "solvers/hermite_weights.hpp"
 
 namespace openmss::solvers {
 namespace {
@@ -446,10 +447,7 @@ void HhtIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
     return;
   }
   const double x = (s - tPrevious_) / h;
-  const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
-  const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
-  const double d00 = 6 * x * x - 6 * x, d10 = 3 * x * x - 4 * x + 1;
-  const double d01 = -d00, d11 = 3 * x * x - 2 * x;
+  const auto [h00, h10, h01, h11, d00, d10, d01, d11] = hermiteWeights(x);
   y.resize(y_.size());
   yp.resize(y_.size());
   for (int i = 0; i < y_.size(); ++i) {

@@ -1,12 +1,5 @@
 #include "solvers/ida_integrator.hpp"
 
-#include <algorithm>
-#include <cmath>
-#include <deque>
-#include <limits>
-#include <string>
-#include <vector>
-
 #include <ida/ida.h>
 #include <nvector/nvector_serial.h>
 #include <sundials/sundials_context.h>
@@ -15,6 +8,14 @@
 #include <sunmatrix/sunmatrix_sparse.h>
 #include <sunnonlinsol/sunnonlinsol_newton.h>
 
+#include <algorithm>
+#include <cmath>
+#include <deque>
+#include <limits>
+#include <string>
+#include <vector>
+
+#include "solvers/hermite_weights.hpp"
 #include "solvers/klu_linear_solver.hpp"
 
 namespace openmss::solvers {
@@ -494,8 +495,7 @@ void IdaIntegrator::start(double t0, const Eigen::VectorXd& y0, const Eigen::Vec
   t_ = tPrevious_ = lastStepStart_ = t0;
   y_ = y0;
   yp_ = yp0;
-  yEntry_.resize(0);
-  ypEntry_.resize(0);
+  spanFromEntry_ = false;
   countedBefore_ = {};
   stats_ = {};
   failure_ = {};
@@ -571,10 +571,7 @@ bool IdaIntegrator::step(double tout) {
     }
     if (e.stalledMove && !returned && t_ < tout - eps) continue;  // not handed over yet
     tPrevious_ = tEntry;
-    if (!saved) {
-      yEntry_.resize(0);
-      ypEntry_.resize(0);
-    }
+    spanFromEntry_ = saved;
     return true;
   }
 }
@@ -586,16 +583,13 @@ void IdaIntegrator::interpolate(double s, Eigen::VectorXd& y, Eigen::VectorXd& y
     yp = yp_;
     return;
   }
-  if (s < lastStepStart_ && yEntry_.size() == y_.size() && s >= tPrevious_) {
+  if (s < lastStepStart_ && spanFromEntry_ && s >= tPrevious_) {
     // Before IDA's last step, after the state handed over last (step(): the steps taken at
     // once after a stalled move): the cubic Hermite through both ends.
     const double span = t_ - tPrevious_, x = (s - tPrevious_) / span;
-    const double h00 = (1 + 2 * x) * (1 - x) * (1 - x), h10 = x * (1 - x) * (1 - x);
-    const double h01 = x * x * (3 - 2 * x), h11 = x * x * (x - 1);
-    y = h00 * yEntry_ + h10 * span * ypEntry_ + h01 * y_ + h11 * span * yp_;
-    const double d00 = 6 * x * (x - 1), d10 = (1 - x) * (1 - 3 * x);
-    const double d01 = -6 * x * (x - 1), d11 = x * (3 * x - 2);
-    yp = (d00 * yEntry_ + d01 * y_) / span + d10 * ypEntry_ + d11 * yp_;
+    const HermiteWeights w = hermiteWeights(x);
+    y = w.h00 * yEntry_ + w.h10 * span * ypEntry_ + w.h01 * y_ + w.h11 * span * yp_;
+    yp = (w.d00 * yEntry_ + w.d01 * y_) / span + w.d10 * ypEntry_ + w.d11 * yp_;
     return;
   }
   IDAGetDky(e.ida, s, 0, e.work);

@@ -70,6 +70,7 @@ class IdaIntegrator final : public Integrator {
   // with a cubic Hermite from the entry state); and the counters of the IDA runs before the
   // last re-initialisation, which resets IDA's own.
   Eigen::VectorXd yEntry_, ypEntry_;
+  bool spanFromEntry_ = false;  // the last call handed over more than one step
   double lastStepStart_ = 0.0;
   IntegratorStatistics countedBefore_;
 };
